@@ -1,0 +1,78 @@
+// The renderer library's public C++ API: what stipple-render and stipple-validate use.
+// Contract between integrators/ (implements it) and validation/ (drives it in-process).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace stipple::render {
+
+// Version string of the renderer; part of every reference-cache key.
+const char* rendererVersion();
+
+// Scene-linear Rec.709 RGB image, row-major, top row first, 3 floats per pixel.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;
+    float* pixel(int x, int y) { return rgb.data() + 3 * (size_t(y) * width + x); }
+    const float* pixel(int x, int y) const { return rgb.data() + 3 * (size_t(y) * width + x); }
+};
+
+// Everything a render can be told; zero / empty means "the scene's default".
+struct RenderOptions {
+    std::string pattern = "stratified"; // independent | stratified | poisson | poisson-seed
+    uint32_t spp = 0;
+    uint64_t seed = 1;
+    int width = 0;
+    int height = 0;
+    std::string integrator;             // path | direct | bdpt; empty: the scene's
+    int maxDepth = -1;                  // -1: the scene's
+    int threads = 0;                    // 0: all hardware threads
+    bool progress = false;              // progress bar on stderr when it is a TTY
+};
+
+struct RenderResult {
+    Image image;                  // per-pixel mean radiance
+    Image variance;               // per-pixel, per-channel variance of the mean (sample variance / spp)
+    double renderSeconds = 0;     // wall seconds of the render loop (no scene load, no BVH build)
+    double samplerSeconds = 0;    // seconds spent inside the shim, summed over threads / thread count
+    uint64_t nonFiniteSamples = 0;
+    uint64_t raysTraced = 0;
+    std::string layout;           // the dimension layout declared to the shim, one line per dimension
+};
+
+class Scene {
+public:
+    // Loads a scene file and builds its BVH. Throws SceneError naming file, line, column and key.
+    static std::unique_ptr<Scene> load(const std::string& path);
+    virtual ~Scene() = default;
+
+    virtual const std::string& name() const = 0;
+    virtual const std::string& defaultIntegrator() const = 0;
+    virtual int defaultWidth() const = 0;
+    virtual int defaultHeight() const = 0;
+    virtual uint32_t defaultSpp() const = 0;
+    virtual std::string contentHash() const = 0; // hash of the file and everything it includes
+    virtual double loadSeconds() const = 0;      // parsing + geometry generation
+    virtual double buildSeconds() const = 0;     // Embree BVH build
+    virtual uint64_t triangleCount() const = 0;  // after instancing
+
+    // The layout this scene would declare to the shim for the given options, one line per dimension.
+    virtual std::string describeLayout(const RenderOptions& options) const = 0;
+
+    // Renders; thread-safe to call repeatedly, deterministic for a given (options) and any thread count.
+    virtual RenderResult render(const RenderOptions& options) const = 0;
+};
+
+// Writes a float EXR (scene-linear) with metadata, via a temp file renamed into place.
+void writeExr(const std::string& path, const Image& image,
+              const std::vector<std::pair<std::string, std::string>>& metadata);
+// Writes an sRGB PNG through OpenColorIO (scene-linear Rec.709 -> sRGB display), exposure in stops.
+void writePng(const std::string& path, const Image& image, float exposureStops = 0.0f);
+// Reads an EXR written by writeExr (or any RGB image OIIO reads).
+Image readImage(const std::string& path);
+
+} // namespace stipple::render
