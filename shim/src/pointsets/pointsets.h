@@ -1,0 +1,32 @@
+// pointsets.h — Poisson-disk point-set generators of the shim (internal C++, never exported).
+//
+// All sets live on the unit torus [0,1)^dim, dim in 1..3, stored interleaved (x0,y0,x1,y1,...).
+// Every function is a pure function of its arguments: no global state, no exceptions for valid input.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace stipple::pointsets {
+
+// Exactly n points in [0,1)^dim (dim 1..3), interleaved, toroidal domain. Deterministic in seed.
+// High quality: minimum-distance-targeted relaxation (see shim/POINTSETS.md). Spatially shuffled order.
+std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
+
+// The study's Algorithm 1: dart throwing with r0 = N^(-1/dim), r <- 0.75 r after TRY_LIMIT = 100
+// consecutive failures, neighbour search in an ordered set (1D), quadtree (2D) or octree (3D).
+std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed);
+
+// rho = d_min / d_max on the unit torus, d_max the densest packing distance of n points
+// (1/n in 1D, hexagonal sqrt(2/(sqrt(3) n)) in 2D, FCC (sqrt(2)/n)^(1/3) in 3D).
+// For n = 1 the only neighbour is the point's own periodic image at distance 1.
+double relativeRadius(int dim, const float* points, uint32_t n);
+
+// Mean over points of (nearest-neighbour distance / d_max), toroidal: the "average" figure of the
+// literature (dart throwing ~0.805 in 2D).
+double meanNearestNeighbourRadius(int dim, const float* points, uint32_t n);
+
+// d_max of n points in dim dimensions (see relativeRadius).
+double maxPackingDistance(int dim, uint32_t n);
+
+}  // namespace stipple::pointsets

@@ -1,0 +1,90 @@
+// poisson_seed.cpp — the study's Algorithm 1 (dart throwing with a shrinking radius), kept faithfully as
+// the baseline every Poisson claim is measured against.
+//
+//   r <- r0;  failures <- 0
+//   while fewer than N points:
+//       p <- uniform random point
+//       if no accepted point within r of p (toroidal):  accept p; failures <- 0
+//       else if ++failures == TRY_LIMIT (100):          r <- 0.75 r; failures <- 0
+//
+// r0 = 1/sqrt(N) in 2D (the study's value). Its analogues: 1/N in 1D and N^(-1/3) in 3D, i.e. the spacing
+// of a regular grid of N points, which is what 1/sqrt(N) is in 2D. Neighbour search: std::set in 1D,
+// quadtree in 2D, octree in 3D (orthant_tree.h). Terminates for every N: r shrinks geometrically, so the
+// acceptance probability tends to 1.
+#include "pointsets.h"
+
+#include <cmath>
+#include <iterator>
+#include <set>
+
+#include "orthant_tree.h"
+#include "random.h"
+#include "torus.h"
+
+namespace stipple::pointsets {
+namespace {
+
+constexpr int kTryLimit = 100;
+constexpr float kShrink = 0.75f;
+
+std::vector<float> dartThrowing1D(uint32_t n, SplitMix64 &rng) {
+    std::set<float> accepted;
+    float r = 1.0f / float(n);
+    int failures = 0;
+    auto distance = [](float a, float b) { return std::fabs(torusDelta(a, b)); };
+    while (accepted.size() < n) {
+        float x = rng.uniformFloat();
+        bool free = true;
+        if (!accepted.empty()) {
+            // The nearest accepted points are the successor and predecessor of x, cyclically.
+            auto next = accepted.lower_bound(x);
+            auto succ = next == accepted.end() ? accepted.begin() : next;
+            auto pred = next == accepted.begin() ? std::prev(accepted.end()) : std::prev(next);
+            free = distance(x, *succ) >= r && distance(x, *pred) >= r;
+        }
+        if (free) {
+            accepted.insert(x);
+            failures = 0;
+        } else if (++failures == kTryLimit) {
+            r *= kShrink;
+            failures = 0;
+        }
+    }
+    return std::vector<float>(accepted.begin(), accepted.end());
+}
+
+template <int D>
+std::vector<float> dartThrowingTree(uint32_t n, SplitMix64 &rng) {
+    OrthantTree<D> tree;
+    float r = float(std::pow(double(n), -1.0 / D));
+    int failures = 0;
+    while (tree.points().size() < n) {
+        typename OrthantTree<D>::Point p;
+        for (int k = 0; k < D; ++k) p[k] = rng.uniformFloat();
+        if (!tree.anyWithin(p, r)) {
+            tree.insert(p);
+            failures = 0;
+        } else if (++failures == kTryLimit) {
+            r *= kShrink;
+            failures = 0;
+        }
+    }
+    std::vector<float> out;
+    out.reserve(size_t(n) * D);
+    for (const auto &p : tree.points()) out.insert(out.end(), p.begin(), p.end());
+    return out;
+}
+
+}  // namespace
+
+std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed) {
+    if (n == 0 || dim < 1 || dim > 3) return {};
+    SplitMix64 rng(deriveSeed(seed, 0x5eed0000u + uint64_t(dim)));
+    switch (dim) {
+        case 1: return dartThrowing1D(n, rng);
+        case 2: return dartThrowingTree<2>(n, rng);
+        default: return dartThrowingTree<3>(n, rng);
+    }
+}
+
+}  // namespace stipple::pointsets
