@@ -1,0 +1,196 @@
+#include "checks.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace stipple::validation {
+
+const char* checkStatusName(CheckStatus status) {
+    switch (status) {
+    case CheckStatus::Pass: return "PASS";
+    case CheckStatus::Fail: return "FAIL";
+    case CheckStatus::NotSeparated: return "NOT SEPARATED";
+    }
+    return "?";
+}
+
+namespace {
+
+std::string fmt(const char* format, auto... args) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, format, args...);
+    return buf;
+}
+
+std::vector<std::string> scenesOf(const Check& c, const Matrix& m) {
+    std::vector<std::string> names;
+    for (const auto& s : m.scenes)
+        if (c.scene == "all" || c.scene == s.name) names.push_back(s.name);
+    return names;
+}
+
+// Worst status wins: FAIL > NOT SEPARATED > PASS.
+void worsen(CheckStatus& s, CheckStatus t) {
+    if (t == CheckStatus::Fail || (t == CheckStatus::NotSeparated && s == CheckStatus::Pass)) s = t;
+}
+
+std::string rmsText(const CellAggregate& c) {
+    return fmt("%s %.5g ± %.2g", c.pattern.c_str(), c.rms.mean, c.rms.halfWidth);
+}
+
+void ordering(const Check& k, const Matrix& m, const std::vector<CellAggregate>& cells, CheckOutcome& o) {
+    std::string chain;
+    for (const auto& p : k.order) chain += (chain.empty() ? "" : " < ") + p;
+    o.claim = fmt("ordering %s spp ≥ %u: RMS %s (95%% intervals separate)", k.scene.c_str(), k.sppMin, chain.c_str());
+    for (const auto& scene : scenesOf(k, m))
+        for (uint32_t spp : m.spp) {
+            if (spp < k.sppMin) continue;
+            std::string line = fmt("%s @ %u spp: ", scene.c_str(), spp);
+            CheckStatus cellStatus = CheckStatus::Pass;
+            for (size_t i = 0; i + 1 < k.order.size(); ++i) {
+                const CellAggregate* a = findCell(cells, scene, k.order[i], spp);
+                const CellAggregate* b = findCell(cells, scene, k.order[i + 1], spp);
+                if (!a || !b) {
+                    line += fmt("[cell %s/%s missing] ", scene.c_str(), (!a ? k.order[i] : k.order[i + 1]).c_str());
+                    worsen(cellStatus, CheckStatus::Fail);
+                    continue;
+                }
+                const char* relation;
+                if (separatedBelow(a->rms, b->rms)) relation = "<";
+                else if (separatedBelow(b->rms, a->rms)) {
+                    relation = "> (reversed)";
+                    worsen(cellStatus, CheckStatus::Fail);
+                } else {
+                    relation = "~ (overlap)";
+                    worsen(cellStatus, CheckStatus::NotSeparated);
+                }
+                if (i == 0) line += rmsText(*a);
+                line += fmt(" %s %s", relation, rmsText(*b).c_str());
+            }
+            if (cellStatus != CheckStatus::Pass) line += fmt("   <-- %s", checkStatusName(cellStatus));
+            worsen(o.status, cellStatus);
+            o.figures.push_back(line);
+        }
+    if (o.figures.empty()) {
+        o.status = CheckStatus::Fail;
+        o.figures.push_back("no cell matches (no spp ≥ spp_min for these scenes)");
+    }
+}
+
+void slope(const Check& k, const Matrix& m, const std::vector<SlopeFit>& slopes, CheckOutcome& o) {
+    o.claim = fmt("slope %s %s: log RMS vs log spp = %.3g ± %.3g", k.scene.c_str(), k.pattern.c_str(), k.expected,
+                  k.tolerance);
+    for (const auto& scene : scenesOf(k, m)) {
+        const SlopeFit* f = nullptr;
+        for (const auto& s : slopes)
+            if (s.scene == scene && s.pattern == k.pattern) f = &s;
+        if (!f || !std::isfinite(f->fit.slope)) {
+            o.status = CheckStatus::Fail;
+            o.figures.push_back(fmt("%s %s: no fit (too few points with RMS > 0)", scene.c_str(), k.pattern.c_str()));
+            continue;
+        }
+        bool ok = std::fabs(f->fit.slope - k.expected) <= k.tolerance;
+        if (!ok) o.status = CheckStatus::Fail;
+        o.figures.push_back(fmt("%s %s: slope %.3f (95%% CI ± %.3f, %zu points%s)%s", scene.c_str(), k.pattern.c_str(),
+                                f->fit.slope, f->fit.slopeHalfWidth, f->fit.count,
+                                f->excluded ? fmt(", %zu excluded at RMS 0", f->excluded).c_str() : "",
+                                ok ? "" : "   <-- FAIL"));
+    }
+}
+
+void timeRatio(const Check& k, const Matrix& m, const std::vector<ResultRow>& rows,
+               const std::vector<CellAggregate>& cells, CheckOutcome& o) {
+    o.claim = fmt("time_ratio %s @ %u spp: render seconds %s / %s ≤ %.3g (median over seeds of paired ratios)",
+                  k.scene.c_str(), k.spp, k.numerator.c_str(), k.denominator.c_str(), k.maxRatio);
+    for (const auto& scene : scenesOf(k, m)) {
+        // Pair the two patterns' rows of one seed: they ran next to each other (interleaved), so machine noise
+        // that drifts over minutes cancels in the ratio.
+        std::vector<double> ratios;
+        for (const auto& a : rows) {
+            if (a.scene != scene || a.pattern != k.numerator || a.spp != k.spp) continue;
+            for (const auto& b : rows)
+                if (b.scene == scene && b.pattern == k.denominator && b.spp == k.spp && b.seed == a.seed &&
+                    b.renderSeconds > 0)
+                    ratios.push_back(a.renderSeconds / b.renderSeconds);
+        }
+        const CellAggregate* a = findCell(cells, scene, k.numerator, k.spp);
+        const CellAggregate* b = findCell(cells, scene, k.denominator, k.spp);
+        if (ratios.empty() || !a || !b) {
+            o.status = CheckStatus::Fail;
+            o.figures.push_back(fmt("%s: cells missing", scene.c_str()));
+            continue;
+        }
+        double r = median(ratios);
+        bool ok = r <= k.maxRatio;
+        if (!ok) o.status = CheckStatus::Fail;
+        o.figures.push_back(fmt("%s: %s %.4fs / %s %.4fs (medians) ; paired ratio median %.3f over %zu seeds%s",
+                                scene.c_str(), k.numerator.c_str(), a->medianRenderSeconds, k.denominator.c_str(),
+                                b->medianRenderSeconds, r, ratios.size(), ok ? "" : "   <-- FAIL"));
+    }
+}
+
+void timeCeiling(const Check& k, const Matrix& m, const std::vector<ResultRow>& rows, CheckOutcome& o) {
+    o.claim = fmt("time_ceiling %s: render seconds of every cell × seed ≤ %.3g", k.scene.c_str(), k.seconds);
+    for (const auto& scene : scenesOf(k, m)) {
+        const ResultRow* worst = nullptr;
+        for (const auto& r : rows)
+            if (r.scene == scene && (!worst || r.renderSeconds > worst->renderSeconds)) worst = &r;
+        if (!worst) {
+            o.status = CheckStatus::Fail;
+            o.figures.push_back(fmt("%s: no cells", scene.c_str()));
+            continue;
+        }
+        bool ok = worst->renderSeconds <= k.seconds;
+        if (!ok) o.status = CheckStatus::Fail;
+        o.figures.push_back(fmt("%s: slowest %s @ %u spp seed %llu: %.4fs%s", scene.c_str(), worst->pattern.c_str(),
+                                worst->spp, (unsigned long long)worst->seed, worst->renderSeconds,
+                                ok ? "" : "   <-- FAIL"));
+    }
+}
+
+} // namespace
+
+std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector<ResultRow>& rows,
+                                         const std::vector<CellAggregate>& cells, const std::vector<SlopeFit>& slopes) {
+    std::vector<CheckOutcome> out;
+    for (const auto& k : matrix.checks) {
+        CheckOutcome o;
+        o.check = k;
+        switch (k.type) {
+        case CheckType::Ordering: ordering(k, matrix, cells, o); break;
+        case CheckType::Slope: slope(k, matrix, slopes, o); break;
+        case CheckType::TimeRatio: timeRatio(k, matrix, rows, cells, o); break;
+        case CheckType::TimeCeiling: timeCeiling(k, matrix, rows, o); break;
+        }
+        o.failsRun = o.status == CheckStatus::Fail || (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
+        out.push_back(o);
+    }
+    return out;
+}
+
+std::string formatOutcome(const CheckOutcome& o) {
+    std::string s = fmt("%-13s %s   [%s]", checkStatusName(o.status), o.claim.c_str(), o.check.where.c_str());
+    if (o.status == CheckStatus::NotSeparated) s += o.failsRun ? " (fails the run)" : " (does not fail the run)";
+    s += "\n";
+    for (const auto& f : o.figures) s += "      " + f + "\n";
+    return s;
+}
+
+std::string outcomesJson(const std::vector<CheckOutcome>& outcomes) {
+    std::ostringstream o;
+    o << "[";
+    for (size_t i = 0; i < outcomes.size(); ++i) {
+        const auto& c = outcomes[i];
+        o << (i ? ",\n" : "\n") << "    {\"type\": " << jsonString(checkTypeName(c.check.type))
+          << ", \"where\": " << jsonString(c.check.where) << ", \"status\": " << jsonString(checkStatusName(c.status))
+          << ", \"fails_run\": " << (c.failsRun ? "true" : "false") << ", \"claim\": " << jsonString(c.claim)
+          << ", \"figures\": [";
+        for (size_t j = 0; j < c.figures.size(); ++j) o << (j ? ", " : "") << jsonString(c.figures[j]);
+        o << "]}";
+    }
+    o << "\n  ]";
+    return o.str();
+}
+
+} // namespace stipple::validation

@@ -1,0 +1,30 @@
+// Evaluates the matrix's claims against a run's results: PASS, FAIL or NOT SEPARATED, with the figures.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "matrix.h"
+#include "results.h"
+
+namespace stipple::validation {
+
+enum class CheckStatus { Pass, Fail, NotSeparated };
+const char* checkStatusName(CheckStatus status); // "PASS", "FAIL", "NOT SEPARATED"
+
+struct CheckOutcome {
+    Check check;
+    CheckStatus status = CheckStatus::Pass;
+    bool failsRun = false;           // FAIL, or NOT SEPARATED when the check says not_separated: fail
+    std::string claim;               // one line: what was claimed
+    std::vector<std::string> figures; // one line per cell / scene measured, marked when it is the culprit
+};
+
+std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector<ResultRow>& rows,
+                                         const std::vector<CellAggregate>& cells, const std::vector<SlopeFit>& slopes);
+
+// "PASS  ordering cornell-box spp ≥ 64: stratified < independent" followed by indented figures.
+std::string formatOutcome(const CheckOutcome& outcome);
+std::string outcomesJson(const std::vector<CheckOutcome>& outcomes);
+
+} // namespace stipple::validation

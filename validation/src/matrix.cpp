@@ -1,0 +1,328 @@
+#include "matrix.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace stipple::validation {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& knownPatterns() {
+    static const std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed"};
+    return patterns;
+}
+
+const char* checkTypeName(CheckType type) {
+    switch (type) {
+    case CheckType::Ordering: return "ordering";
+    case CheckType::Slope: return "slope";
+    case CheckType::TimeRatio: return "time_ratio";
+    case CheckType::TimeCeiling: return "time_ceiling";
+    }
+    return "?";
+}
+
+const MatrixScene* Matrix::findScene(const std::string& name) const {
+    for (const auto& s : scenes)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+// Parsing context: the file name for messages.
+struct Parser {
+    std::string file;
+
+    std::string at(const YAML::Node& node) const {
+        const YAML::Mark m = node.Mark();
+        if (m.line < 0) return file;
+        return file + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
+    }
+    [[noreturn]] void fail(const YAML::Node& node, const std::string& what) const {
+        throw MatrixError(at(node) + ": " + what);
+    }
+
+    void expectMap(const YAML::Node& node, const std::string& what) const {
+        if (!node.IsMap()) fail(node, what + " must be a map");
+    }
+    // Unknown keys are errors: a typo must not silently become a default.
+    void onlyKeys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what) const {
+        for (const auto& kv : map) {
+            auto key = kv.first.as<std::string>();
+            if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+                fail(kv.first, "unknown key '" + key + "' in " + what + " (allowed: " + joined(allowed) + ")");
+        }
+    }
+    template <typename T> T get(const YAML::Node& node, const std::string& what) const {
+        if (!node.IsScalar()) fail(node, what + " must be a scalar");
+        try {
+            return node.as<T>();
+        } catch (const YAML::Exception&) {
+            fail(node, "cannot read " + what + " from '" + node.Scalar() + "'");
+        }
+    }
+    double positive(const YAML::Node& node, const std::string& what) const {
+        double v = get<double>(node, what);
+        if (!(v > 0)) fail(node, what + " must be > 0, got " + node.Scalar());
+        return v;
+    }
+    uint32_t spp(const YAML::Node& node, const std::string& what) const {
+        long long v = get<long long>(node, what);
+        if (v < 1 || v > (1ll << 24)) fail(node, what + " must be in [1, 16777216], got " + node.Scalar());
+        return uint32_t(v);
+    }
+    int dimension(const YAML::Node& node, const std::string& what) const {
+        long long v = get<long long>(node, what);
+        if (v < 1 || v > 16384) fail(node, what + " must be in [1, 16384], got " + node.Scalar());
+        return int(v);
+    }
+    std::string pattern(const YAML::Node& node) const {
+        auto p = get<std::string>(node, "pattern");
+        const auto& known = knownPatterns();
+        if (std::find(known.begin(), known.end(), p) == known.end())
+            fail(node, "unknown pattern '" + p + "' (known: " + joined(known) + ")");
+        return p;
+    }
+    const YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& what) const {
+        const YAML::Node n = map[key];
+        if (!n) fail(map, what + " needs '" + key + "'");
+        return n;
+    }
+};
+
+} // namespace
+
+Matrix parseMatrix(const std::string& text, const std::string& path) {
+    Parser P{path};
+    YAML::Node root;
+    try {
+        root = YAML::Load(text);
+    } catch (const YAML::ParserException& e) {
+        throw MatrixError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                          ": " + e.msg);
+    }
+    if (!root || !root.IsMap()) throw MatrixError(path + ":1:1: a matrix must be a YAML map");
+    const YAML::Node& croot = root;
+    P.onlyKeys(croot, {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop",
+                       "baseline", "checks"},
+               "the matrix");
+
+    Matrix m;
+    m.path = path;
+    m.text = text;
+    const fs::path base = fs::path(path).parent_path();
+    auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
+
+    m.name = croot["name"] ? P.get<std::string>(croot["name"], "name") : fs::path(path).stem().string();
+    if (croot["cache"]) m.cacheDir = resolve(P.get<std::string>(croot["cache"], "cache"));
+    if (croot["threads"]) {
+        m.threads = P.get<int>(croot["threads"], "threads");
+        if (m.threads < 0) P.fail(croot["threads"], "threads must be ≥ 0 (0: all hardware threads)");
+    }
+
+    // scenes
+    const YAML::Node scenes = P.required(croot, "scenes", "the matrix");
+    if (!scenes.IsSequence() || scenes.size() == 0) P.fail(scenes, "scenes must be a non-empty list");
+    for (const auto& s : scenes) {
+        MatrixScene ms;
+        if (s.IsScalar()) {
+            ms.file = P.get<std::string>(s, "scene file");
+        } else {
+            P.expectMap(s, "a scene entry");
+            P.onlyKeys(s, {"file", "name", "width", "height", "integrator", "max_depth"}, "a scene entry");
+            ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
+            if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
+            if (s["width"]) ms.width = P.dimension(s["width"], "width");
+            if (s["height"]) ms.height = P.dimension(s["height"], "height");
+            if (s["integrator"]) {
+                ms.integrator = P.get<std::string>(s["integrator"], "integrator");
+                if (ms.integrator != "path" && ms.integrator != "direct" && ms.integrator != "bdpt")
+                    P.fail(s["integrator"], "unknown integrator '" + ms.integrator + "' (known: path, direct, bdpt)");
+            }
+            if (s["max_depth"]) {
+                ms.maxDepth = P.get<int>(s["max_depth"], "max_depth");
+                if (ms.maxDepth < 0) P.fail(s["max_depth"], "max_depth must be ≥ 0");
+            }
+        }
+        ms.path = resolve(ms.file);
+        if (!fs::is_regular_file(ms.path))
+            P.fail(s, "unknown scene file '" + ms.file + "' (looked for " + ms.path + ")");
+        if (ms.name.empty()) ms.name = fs::path(ms.file).stem().string();
+        if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
+        if (m.findScene(ms.name)) P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
+        m.scenes.push_back(ms);
+    }
+
+    // patterns
+    const YAML::Node patterns = P.required(croot, "patterns", "the matrix");
+    if (!patterns.IsSequence() || patterns.size() == 0) P.fail(patterns, "patterns must be a non-empty list");
+    for (const auto& p : patterns) {
+        auto name = P.pattern(p);
+        if (std::find(m.patterns.begin(), m.patterns.end(), name) != m.patterns.end())
+            P.fail(p, "pattern '" + name + "' listed twice");
+        m.patterns.push_back(name);
+    }
+
+    // spp
+    const YAML::Node spp = P.required(croot, "spp", "the matrix");
+    if (spp.IsScalar()) m.spp.push_back(P.spp(spp, "spp"));
+    else if (spp.IsSequence() && spp.size() > 0)
+        for (const auto& n : spp) m.spp.push_back(P.spp(n, "spp"));
+    else P.fail(spp, "spp must be a number or a non-empty list");
+    std::sort(m.spp.begin(), m.spp.end());
+    if (std::adjacent_find(m.spp.begin(), m.spp.end()) != m.spp.end()) P.fail(spp, "spp lists a value twice");
+
+    // seeds: K or an explicit list
+    const YAML::Node seeds = P.required(croot, "seeds", "the matrix");
+    if (seeds.IsScalar()) {
+        long long k = P.get<long long>(seeds, "seeds");
+        if (k < 4 || k > 1000) P.fail(seeds, "seeds must be a count in [4, 1000] (K ≥ 4 for an interval), got " +
+                                                 seeds.Scalar());
+        for (long long i = 1; i <= k; ++i) m.seeds.push_back(uint64_t(i));
+    } else if (seeds.IsSequence()) {
+        std::set<uint64_t> seen;
+        for (const auto& n : seeds) {
+            auto v = P.get<uint64_t>(n, "seed");
+            if (!seen.insert(v).second) P.fail(n, "seed " + n.Scalar() + " listed twice");
+            m.seeds.push_back(v);
+        }
+        if (m.seeds.size() < 4) P.fail(seeds, "seeds must list at least 4 values (K ≥ 4 for an interval)");
+    } else P.fail(seeds, "seeds must be a count or a list of seeds");
+
+    // reference
+    if (const YAML::Node r = croot["reference"]) {
+        P.expectMap(r, "reference");
+        P.onlyKeys(r, {"pattern", "spp", "seed"}, "reference");
+        if (r["pattern"]) m.reference.pattern = P.pattern(r["pattern"]);
+        if (r["spp"]) m.reference.spp = P.spp(r["spp"], "reference spp");
+        if (r["seed"]) m.reference.seed = P.get<uint64_t>(r["seed"], "reference seed");
+        if (std::find(m.seeds.begin(), m.seeds.end(), m.reference.seed) != m.seeds.end())
+            P.fail(r, "the reference seed must differ from the cells' seeds (its noise would correlate with theirs)");
+    }
+    if (m.reference.spp < 4 * m.spp.back())
+        P.fail(croot["reference"] ? croot["reference"] : croot,
+               "reference spp (" + std::to_string(m.reference.spp) + ") must be ≥ 4× the largest cell spp (" +
+                   std::to_string(m.spp.back()) + ")");
+
+    // crop
+    if (const YAML::Node c = croot["crop"]) {
+        P.expectMap(c, "crop");
+        P.onlyKeys(c, {"x", "y", "size", "scale", "spp"}, "crop");
+        auto fraction = [&](const YAML::Node& n, const char* what) {
+            double v = P.get<double>(n, what);
+            if (!(v >= 0 && v <= 1)) P.fail(n, std::string(what) + " is a fraction of the image, in [0, 1]");
+            return v;
+        };
+        if (c["x"]) m.crop.x = fraction(c["x"], "crop x");
+        if (c["y"]) m.crop.y = fraction(c["y"], "crop y");
+        if (c["size"]) m.crop.size = P.dimension(c["size"], "crop size");
+        if (c["scale"]) m.crop.scale = std::clamp(P.dimension(c["scale"], "crop scale"), 1, 16);
+        if (c["spp"]) {
+            m.crop.spp = P.spp(c["spp"], "crop spp");
+            if (std::find(m.spp.begin(), m.spp.end(), m.crop.spp) == m.spp.end())
+                P.fail(c["spp"], "crop spp must be one of the matrix's spp");
+        }
+    }
+
+    if (const YAML::Node b = croot["baseline"]) {
+        P.expectMap(b, "baseline");
+        P.onlyKeys(b, {"time_factor"}, "baseline");
+        if (b["time_factor"]) m.baselineTimeFactor = P.positive(b["time_factor"], "time_factor");
+    }
+
+    // checks
+    auto sceneRef = [&](const YAML::Node& n, bool allowAll) {
+        auto s = P.get<std::string>(n, "scene");
+        if (allowAll && s == "all") return s;
+        if (!m.findScene(s)) {
+            std::vector<std::string> names;
+            for (const auto& ms : m.scenes) names.push_back(ms.name);
+            P.fail(n, "unknown scene '" + s + "' (matrix scenes: " + joined(names) + (allowAll ? ", or all" : "") + ")");
+        }
+        return s;
+    };
+    auto matrixPattern = [&](const YAML::Node& n) {
+        auto p = P.pattern(n);
+        if (std::find(m.patterns.begin(), m.patterns.end(), p) == m.patterns.end())
+            P.fail(n, "pattern '" + p + "' is not among the matrix's patterns (" + joined(m.patterns) + ")");
+        return p;
+    };
+    auto matrixSpp = [&](const YAML::Node& n, const char* what) {
+        auto v = P.spp(n, what);
+        if (std::find(m.spp.begin(), m.spp.end(), v) == m.spp.end())
+            P.fail(n, std::string(what) + " " + n.Scalar() + " is not among the matrix's spp");
+        return v;
+    };
+    if (const YAML::Node checks = croot["checks"]) {
+        if (!checks.IsSequence()) P.fail(checks, "checks must be a list");
+        for (const auto& c : checks) {
+            P.expectMap(c, "a check");
+            Check k;
+            k.where = P.at(c);
+            auto type = P.get<std::string>(P.required(c, "type", "a check"), "check type");
+            if (type == "ordering") {
+                k.type = CheckType::Ordering;
+                P.onlyKeys(c, {"type", "scene", "spp_min", "order", "not_separated"}, "an ordering check");
+                k.scene = sceneRef(P.required(c, "scene", "an ordering check"), true);
+                k.sppMin = c["spp_min"] ? P.spp(c["spp_min"], "spp_min") : m.spp.back();
+                if (k.sppMin > m.spp.back()) P.fail(c["spp_min"], "spp_min is above every spp of the matrix");
+                const YAML::Node order = P.required(c, "order", "an ordering check");
+                if (!order.IsSequence() || order.size() < 2)
+                    P.fail(order, "order must list at least two patterns, best first");
+                for (const auto& p : order) k.order.push_back(matrixPattern(p));
+                if (c["not_separated"]) {
+                    auto v = P.get<std::string>(c["not_separated"], "not_separated");
+                    if (v != "fail" && v != "pass") P.fail(c["not_separated"], "not_separated must be fail or pass");
+                    k.notSeparatedFails = v == "fail";
+                }
+            } else if (type == "slope") {
+                k.type = CheckType::Slope;
+                P.onlyKeys(c, {"type", "scene", "pattern", "expected", "tolerance"}, "a slope check");
+                k.scene = sceneRef(P.required(c, "scene", "a slope check"), true);
+                k.pattern = matrixPattern(P.required(c, "pattern", "a slope check"));
+                k.expected = P.get<double>(P.required(c, "expected", "a slope check"), "expected");
+                k.tolerance = P.positive(P.required(c, "tolerance", "a slope check"), "tolerance");
+                if (m.spp.size() < 2) P.fail(c, "a slope check needs at least two spp in the matrix");
+            } else if (type == "time_ratio") {
+                k.type = CheckType::TimeRatio;
+                P.onlyKeys(c, {"type", "scene", "numerator", "denominator", "max", "spp"}, "a time_ratio check");
+                k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
+                k.numerator = matrixPattern(P.required(c, "numerator", "a time_ratio check"));
+                k.denominator = matrixPattern(P.required(c, "denominator", "a time_ratio check"));
+                k.maxRatio = P.positive(P.required(c, "max", "a time_ratio check"), "max");
+                k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
+            } else if (type == "time_ceiling") {
+                k.type = CheckType::TimeCeiling;
+                P.onlyKeys(c, {"type", "scene", "seconds"}, "a time_ceiling check");
+                k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
+                k.seconds = P.positive(P.required(c, "seconds", "a time_ceiling check"), "seconds");
+            } else {
+                P.fail(c["type"], "unknown check type '" + type + "' (known: ordering, slope, time_ratio, time_ceiling)");
+            }
+            m.checks.push_back(k);
+        }
+    }
+    return m;
+}
+
+Matrix loadMatrix(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw MatrixError(path + ": cannot open the matrix file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parseMatrix(ss.str(), path);
+}
+
+} // namespace stipple::validation

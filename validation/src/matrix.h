@@ -1,0 +1,88 @@
+// The validation matrix: which scenes, patterns, sample counts and seeds to run, how to make the reference,
+// and which claims to check. Parsed from YAML (format in validation/README.md); every error names
+// file:line:column and, for unknown names, the name and what is allowed.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stipple::validation {
+
+class MatrixError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct MatrixScene {
+    std::string name;        // used by checks and in the report; default: the file's stem
+    std::string file;        // as written in the matrix
+    std::string path;        // resolved against the matrix file's folder
+    int width = 0, height = 0; // 0: the scene's default
+    std::string integrator;  // empty: the scene's
+    int maxDepth = -1;       // -1: the scene's
+};
+
+struct ReferenceSettings {
+    std::string pattern = "independent";
+    uint32_t spp = 1024;
+    uint64_t seed = 1000003;
+};
+
+struct CropSettings {
+    double x = 0.5, y = 0.5; // centre as a fraction of width / height
+    int size = 16;           // side in pixels (clamped to the image)
+    int scale = 4;           // nearest-neighbour magnification of the PNGs
+    uint32_t spp = 0;        // 0: the largest spp of the matrix
+};
+
+enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling };
+
+struct Check {
+    CheckType type = CheckType::Ordering;
+    std::string where;       // file:line:column of the check in the matrix
+    std::string scene = "all";
+    // ordering
+    uint32_t sppMin = 0;
+    std::vector<std::string> order; // best → worst
+    bool notSeparatedFails = true;
+    // slope
+    std::string pattern;
+    double expected = 0, tolerance = 0;
+    // time_ratio
+    std::string numerator, denominator;
+    double maxRatio = 0;
+    uint32_t spp = 0;        // 0: the largest spp of the matrix
+    // time_ceiling
+    double seconds = 0;
+};
+
+struct Matrix {
+    std::string path;        // the matrix file as given
+    std::string text;        // its full text, shown in the report
+    std::string name;
+    std::vector<MatrixScene> scenes;
+    std::vector<std::string> patterns;
+    std::vector<uint32_t> spp;   // ascending
+    std::vector<uint64_t> seeds; // K ≥ 4
+    ReferenceSettings reference;
+    std::string cacheDir;        // resolved; empty: <report>/../.stipple-cache
+    int threads = 0;
+    CropSettings crop;
+    double baselineTimeFactor = 1.5; // --baseline: a cell's median seconds may grow by this factor
+    std::vector<Check> checks;
+
+    const MatrixScene* findScene(const std::string& name) const;
+};
+
+const std::vector<std::string>& knownPatterns();
+
+// Reads and validates a matrix file. Throws MatrixError("file:line:column: what").
+Matrix loadMatrix(const std::string& path);
+// Same, from text; `path` names it in errors and relative paths resolve against its folder.
+Matrix parseMatrix(const std::string& text, const std::string& path);
+
+const char* checkTypeName(CheckType type);
+
+} // namespace stipple::validation

@@ -1,0 +1,86 @@
+// What a run measured: one row per cell × seed, per-scene facts (load, BVH build, reference), and the
+// per-cell aggregates over seeds. Written as results.csv / results.json; results.json reads back for
+// --merge and --baseline.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "matrix.h"
+#include "statistics.h"
+
+namespace stipple::validation {
+
+struct ResultRow {
+    std::string scene, pattern;
+    uint32_t spp = 0;
+    uint64_t seed = 0;
+    int width = 0, height = 0;
+    double mse = 0, rms = 0;                   // against the reference, as measured
+    double mseCorrected = 0, rmsCorrected = 0; // reference noise floor removed: max(mse − floor, 0)
+    bool floorLimited = false;                 // mseCorrected ≤ 2 × floor
+    uint64_t nonFinitePixels = 0;              // excluded from the error
+    uint64_t nonFiniteSamples = 0;             // reported by the renderer's film
+    double renderSeconds = 0, samplerSeconds = 0;
+};
+
+struct SceneInfo {
+    std::string name, file, contentHash, integrator;
+    int width = 0, height = 0;
+    uint64_t triangles = 0;
+    double loadSeconds = 0, buildSeconds = 0; // reported apart from the cells' render seconds
+    std::string referenceKey;                 // cache key of the reference
+    uint32_t referenceSpp = 0;
+    double referenceSeconds = 0;              // 0 when it came from the cache
+    double noiseFloor = 0;                    // E[MSE contribution of the reference's noise]
+};
+
+struct Results {
+    std::string matrixName, rendererVersion;
+    std::vector<SceneInfo> scenes;
+    std::vector<ResultRow> rows;
+};
+
+// Over the K seeds of one (scene, pattern, spp).
+struct CellAggregate {
+    std::string scene, pattern;
+    uint32_t spp = 0;
+    Interval rms;                    // of rmsCorrected, t interval, 95%
+    double meanRmsMeasured = 0;      // before the floor correction
+    double meanMse = 0, meanMseCorrected = 0;
+    double medianRenderSeconds = 0, medianSamplerSeconds = 0;
+    double efficiency = 0;           // 1 / (mean corrected MSE · median render seconds)
+    int floorLimitedSeeds = 0;
+    uint64_t nonFinitePixels = 0;
+    size_t seeds = 0;
+};
+
+// Fitted log RMS vs log spp over per-seed points of one (scene, pattern).
+struct SlopeFit {
+    std::string scene, pattern;
+    LineFit fit;
+    size_t excluded = 0; // points with corrected RMS 0 (no logarithm)
+};
+
+// Rows in the matrix's canonical order (scene, pattern, spp, seed as listed); unknown names last.
+void sortRows(std::vector<ResultRow>& rows, const Matrix& matrix);
+std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& sortedRows);
+std::vector<SlopeFit> fitSlopes(const std::vector<ResultRow>& rows, const Matrix& matrix);
+const CellAggregate* findCell(const std::vector<CellAggregate>& cells, const std::string& scene,
+                              const std::string& pattern, uint32_t spp);
+
+void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows);
+// Writes everything: rows, scenes, aggregates, slopes; `extraJson` (a JSON value) goes under "checks".
+void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
+                      const std::vector<SlopeFit>& slopes, const std::string& checksJson);
+// Reads the rows and scenes back. Throws std::runtime_error naming the file (and line:column) on bad input.
+Results readResultsJson(const std::string& path);
+
+// Helpers shared by the report writers.
+std::string jsonString(const std::string& s);
+std::string jsonNumber(double v);
+// Writes `text` to `path` through a temporary file renamed into place.
+void writeTextFile(const std::string& path, const std::string& text);
+
+} // namespace stipple::validation

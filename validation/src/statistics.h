@@ -1,0 +1,42 @@
+// Small statistics used by the validation report: means, Student-t intervals, medians and the
+// least-squares slope of log RMS against log spp with its interval.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace stipple::validation {
+
+// Two-sided interval of a mean: mean ± halfWidth. halfWidth is NaN with fewer than 2 values.
+struct Interval {
+    double mean = 0;
+    double halfWidth = 0;
+    size_t count = 0;
+    double lo() const { return mean - halfWidth; }
+    double hi() const { return mean + halfWidth; }
+};
+
+double mean(const std::vector<double>& values);
+// Unbiased sample variance (n - 1 in the denominator); 0 for fewer than two values.
+double sampleVariance(const std::vector<double>& values);
+double median(std::vector<double> values);
+
+// Quantile of Student's t with `dof` degrees of freedom (e.g. 0.975 for a two-sided 95% interval).
+double studentTQuantile(double p, double dof);
+
+// Mean with the t-distribution interval at the given confidence (0.95: two-sided 95%).
+Interval meanInterval(const std::vector<double>& values, double confidence = 0.95);
+
+// Least-squares line y = intercept + slope x, with a t interval on the slope (n - 2 dof).
+struct LineFit {
+    double slope = 0;
+    double intercept = 0;
+    double slopeHalfWidth = 0; // NaN when n < 3 or the x values do not vary
+    size_t count = 0;
+};
+LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y, double confidence = 0.95);
+
+// True when the two intervals do not overlap: a < b is established only when a.hi() < b.lo().
+inline bool separatedBelow(const Interval& a, const Interval& b) { return a.hi() < b.lo(); }
+
+} // namespace stipple::validation

@@ -1,0 +1,134 @@
+// Checks on synthetic results: each outcome (PASS, FAIL, NOT SEPARATED) is reached for the right reason;
+// the baseline comparison and results.json round trip.
+#define BOOST_TEST_MODULE validation_checks
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <fstream>
+#include <unistd.h>
+
+#include "baseline.h"
+#include "checks.h"
+#include "report.h"
+
+using namespace stipple::validation;
+namespace fs = std::filesystem;
+
+namespace {
+struct Fixture {
+    fs::path dir;
+    Matrix matrix;
+    Fixture() {
+        dir = fs::temp_directory_path() / ("stipple-checks-test-" + std::to_string(::getpid()));
+        fs::create_directories(dir);
+        std::ofstream(dir / "box.yaml") << "name: box\n";
+        std::ofstream(dir / "m.yaml") << R"(scenes: [box.yaml]
+patterns: [independent, stratified, poisson]
+spp: [4, 16, 64]
+seeds: 4
+reference: { spp: 1024 }
+checks:
+  - { type: ordering, scene: box, spp_min: 16, order: [stratified, independent] }
+  - { type: ordering, scene: box, spp_min: 64, order: [poisson, stratified] }
+  - { type: ordering, scene: box, spp_min: 64, order: [independent, stratified] }
+  - { type: slope, scene: box, pattern: independent, expected: -0.5, tolerance: 0.05 }
+  - { type: slope, scene: box, pattern: stratified, expected: -0.5, tolerance: 0.05 }
+  - { type: time_ratio, numerator: poisson, denominator: stratified, max: 1.05 }
+  - { type: time_ratio, numerator: independent, denominator: stratified, max: 1.05 }
+  - { type: time_ceiling, seconds: 1.5 }
+)";
+        matrix = loadMatrix((dir / "m.yaml").string());
+    }
+    ~Fixture() { fs::remove_all(dir); }
+};
+
+// independent: RMS = spp^-0.5 (slope −0.5); stratified: spp^-0.75; poisson: as stratified with the same spread,
+// so stratified vs poisson overlap. Seeds spread the RMS by ±2%. Times: independent 1 s, stratified 1 s,
+// poisson 1.02 s, independent at 64 spp takes 2 s for seed 4 (the slowest cell).
+std::vector<ResultRow> syntheticRows() {
+    std::vector<ResultRow> rows;
+    const double spread[4] = {-0.02, -0.01, 0.01, 0.02};
+    for (const char* pattern : {"independent", "stratified", "poisson"})
+        for (uint32_t spp : {4u, 16u, 64u})
+            for (int s = 0; s < 4; ++s) {
+                ResultRow r;
+                r.scene = "box";
+                r.pattern = pattern;
+                r.spp = spp;
+                r.seed = uint64_t(s + 1);
+                double exponent = std::string(pattern) == "independent" ? -0.5 : -0.75;
+                r.rmsCorrected = r.rms = std::pow(double(spp), exponent) * (1 + spread[s]);
+                r.mseCorrected = r.mse = r.rms * r.rms;
+                r.renderSeconds = std::string(pattern) == "poisson" ? 1.02 : 1.0;
+                if (std::string(pattern) == "independent" && spp == 64 && s == 3) r.renderSeconds = 2.0;
+                rows.push_back(r);
+            }
+    return rows;
+}
+} // namespace
+
+BOOST_AUTO_TEST_CASE(outcomes_of_synthetic_claims) {
+    Fixture f;
+    auto rows = syntheticRows();
+    sortRows(rows, f.matrix);
+    auto cells = aggregate(rows);
+    BOOST_REQUIRE_EQUAL(cells.size(), 9u);
+    auto slopes = fitSlopes(rows, f.matrix);
+    auto out = evaluateChecks(f.matrix, rows, cells, slopes);
+    BOOST_REQUIRE_EQUAL(out.size(), 8u);
+    for (const auto& o : out) BOOST_TEST_MESSAGE(formatOutcome(o));
+    BOOST_CHECK(out[0].status == CheckStatus::Pass);         // stratified < independent, separated at 16 and 64
+    BOOST_CHECK_EQUAL(out[0].figures.size(), 2u);
+    BOOST_CHECK(out[1].status == CheckStatus::NotSeparated); // poisson ~ stratified
+    BOOST_CHECK(out[1].failsRun);                            // default: not_separated fails
+    BOOST_CHECK(out[2].status == CheckStatus::Fail);         // reversed
+    BOOST_CHECK(formatOutcome(out[2]).find("> (reversed)") != std::string::npos);
+    BOOST_CHECK(out[3].status == CheckStatus::Pass);         // slope −0.5
+    BOOST_CHECK(out[4].status == CheckStatus::Fail);         // stratified's −0.75 is not −0.5 ± 0.05
+    BOOST_CHECK(formatOutcome(out[4]).find("slope -0.750") != std::string::npos);
+    BOOST_CHECK(out[5].status == CheckStatus::Pass);         // 1.02 ≤ 1.05
+    BOOST_CHECK(out[6].status == CheckStatus::Pass);         // median of paired ratios 1.0 (one outlier of 2.0)
+    BOOST_CHECK(out[7].status == CheckStatus::Fail);         // the 2 s cell breaks the 1.5 s ceiling
+    BOOST_CHECK(formatOutcome(out[7]).find("independent @ 64 spp seed 4: 2.0000s") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(results_json_round_trips_and_baseline_compares) {
+    Fixture f;
+    Results r;
+    r.matrixName = "m";
+    r.rendererVersion = "test \"1\"";
+    r.rows = syntheticRows();
+    r.rows[0].rms = std::numeric_limits<double>::quiet_NaN(); // written as null, read as NaN
+    sortRows(r.rows, f.matrix);
+    SceneInfo s;
+    s.name = "box";
+    s.noiseFloor = 1e-5;
+    r.scenes.push_back(s);
+    auto cells = aggregate(r.rows);
+    std::string path = (f.dir / "results.json").string();
+    writeResultsJson(path, r, cells, fitSlopes(r.rows, f.matrix), "[]");
+    Results back = readResultsJson(path);
+    BOOST_CHECK_EQUAL(back.rendererVersion, "test \"1\"");
+    BOOST_REQUIRE_EQUAL(back.rows.size(), r.rows.size());
+    BOOST_CHECK(std::isnan(back.rows[0].rms));
+    BOOST_CHECK_EQUAL(back.rows[5].rmsCorrected, r.rows[5].rmsCorrected); // %.17g is exact
+    BOOST_CHECK_EQUAL(back.scenes.at(0).noiseFloor, 1e-5);
+
+    // Same run: no regression. Worse RMS beyond the intervals, or slower beyond the factor: FAIL.
+    BOOST_CHECK(!compareToBaseline(cells, aggregate(back.rows), 1.5).failed);
+    auto worse = r.rows;
+    for (auto& row : worse)
+        if (row.pattern == "stratified" && row.spp == 64) row.rmsCorrected *= 1.2;
+    auto cmp = compareToBaseline(aggregate(worse), cells, 1.5);
+    BOOST_CHECK(cmp.failed);
+    BOOST_REQUIRE_EQUAL(cmp.lines.size(), 1u);
+    BOOST_CHECK(cmp.lines[0].find("FAIL rms  box stratified @ 64 spp") == 0);
+    auto slower = r.rows;
+    for (auto& row : slower) row.renderSeconds *= 2;
+    BOOST_CHECK(compareToBaseline(aggregate(slower), cells, 1.5).failed);
+    BOOST_CHECK(!compareToBaseline(aggregate(slower), cells, 2.5).failed);
+
+    BOOST_CHECK_THROW(readResultsJson((f.dir / "m.yaml").string()), std::runtime_error);
+}

@@ -1,0 +1,99 @@
+// The study's RMS and the reference noise-floor correction on synthetic images with known answers.
+#define BOOST_TEST_MODULE validation_image_metrics
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "image_metrics.h"
+
+using namespace stipple::validation;
+
+namespace {
+Image filled(int w, int h, float r, float g, float b) {
+    Image im;
+    im.width = w;
+    im.height = h;
+    im.rgb.resize(size_t(w) * h * 3);
+    for (size_t i = 0; i < im.rgb.size(); i += 3) {
+        im.rgb[i] = r;
+        im.rgb[i + 1] = g;
+        im.rgb[i + 2] = b;
+    }
+    return im;
+}
+} // namespace
+
+BOOST_AUTO_TEST_CASE(rms_sums_channels_and_averages_pixels) {
+    // Every pixel differs by (1, 2, 2): Σ_rgb d² = 9, so RMS = 3 (not sqrt(3) as a per-channel RMS would be).
+    ImageError e = compareImages(filled(8, 4, 0, 0, 0), filled(8, 4, 1, 2, 2));
+    BOOST_CHECK_CLOSE(e.mse, 9.0, 1e-12);
+    BOOST_CHECK_CLOSE(e.rms, 3.0, 1e-12);
+    BOOST_CHECK_EQUAL(e.pixels, 32u);
+    BOOST_CHECK_EQUAL(e.nonFinitePixels, 0u);
+}
+
+BOOST_AUTO_TEST_CASE(rms_of_one_differing_pixel) {
+    // One pixel of 16 differs by 4 in red: MSE = 16/16 = 1.
+    Image a = filled(4, 4, 0.5f, 0.5f, 0.5f), b = a;
+    b.pixel(2, 3)[0] += 4.0f;
+    BOOST_CHECK_CLOSE(compareImages(a, b).rms, 1.0, 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(non_finite_pixels_are_counted_and_excluded) {
+    Image a = filled(4, 4, 0, 0, 0), b = filled(4, 4, 1, 0, 0);
+    b.pixel(0, 0)[1] = std::numeric_limits<float>::quiet_NaN();
+    a.pixel(1, 0)[2] = std::numeric_limits<float>::infinity();
+    ImageError e = compareImages(a, b);
+    BOOST_CHECK_EQUAL(e.nonFinitePixels, 2u);
+    BOOST_CHECK_EQUAL(e.pixels, 14u);
+    BOOST_CHECK_CLOSE(e.mse, 1.0, 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(size_mismatch_is_a_clear_error) {
+    try {
+        compareImages(filled(4, 4, 0, 0, 0), filled(4, 5, 0, 0, 0));
+        BOOST_FAIL("no exception");
+    } catch (const std::invalid_argument& e) {
+        BOOST_CHECK(std::string(e.what()).find("4x4") != std::string::npos);
+        BOOST_CHECK(std::string(e.what()).find("4x5") != std::string::npos);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(noise_floor_correction_recovers_the_true_error) {
+    // Truth T; reference R = T + noise of variance vr per channel (its variance image says vr);
+    // image I = T + noise of variance vi. E[MSE(R, I)] = 3 (vr + vi); the floor is 3 vr, so the corrected
+    // MSE estimates 3 vi. 256×256×3 draws put the estimate within ~1% (5 standard errors below 3%).
+    const int w = 256, h = 256;
+    const double vr = 0.02, vi = 0.05;
+    std::mt19937_64 rng(12345);
+    std::normal_distribution<double> nr(0.0, std::sqrt(vr)), ni(0.0, std::sqrt(vi));
+    std::uniform_real_distribution<double> u(0.0, 2.0);
+    Image ref = filled(w, h, 0, 0, 0), img = ref, var = filled(w, h, float(vr), float(vr), float(vr));
+    for (size_t i = 0; i < ref.rgb.size(); ++i) {
+        double t = u(rng);
+        ref.rgb[i] = float(t + nr(rng));
+        img.rgb[i] = float(t + ni(rng));
+    }
+    double floor = noiseFloor(var);
+    BOOST_CHECK_CLOSE(floor, 3 * vr, 1e-4);
+    ImageError e = compareImages(ref, img);
+    BOOST_CHECK_CLOSE(e.mse, 3 * (vr + vi), 3.0);
+    double corrected = correctedMse(e.mse, floor);
+    BOOST_CHECK_CLOSE(corrected, 3 * vi, 3.0);
+    BOOST_CHECK(!floorLimited(corrected, floor)); // 0.15 > 2 × 0.06
+    BOOST_CHECK(floorLimited(correctedMse(3 * vr * 1.5, floor), floor));
+    BOOST_CHECK_EQUAL(correctedMse(0.01, 0.02), 0.0); // never negative
+}
+
+BOOST_AUTO_TEST_CASE(crop_is_clamped_and_magnified) {
+    Image a = filled(10, 6, 0, 0, 0);
+    a.pixel(9, 5)[0] = 7.0f;
+    Image c = cropImage(a, 8, 4, 4, 4, 3); // clamped to x 6..9, y 2..5
+    BOOST_CHECK_EQUAL(c.width, 12);
+    BOOST_CHECK_EQUAL(c.height, 12);
+    BOOST_CHECK_EQUAL(c.pixel(11, 11)[0], 7.0f);
+    BOOST_CHECK_EQUAL(c.pixel(9, 9)[0], 7.0f);
+    BOOST_CHECK_EQUAL(c.pixel(8, 8)[0], 0.0f);
+}

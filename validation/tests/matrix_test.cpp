@@ -1,0 +1,121 @@
+// Matrix parsing: a good matrix reads back; malformed ones fail with file:line:column and name the culprit.
+#define BOOST_TEST_MODULE validation_matrix
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "matrix.h"
+
+using namespace stipple::validation;
+namespace fs = std::filesystem;
+
+namespace {
+// A folder with two (empty) scene files; the parser only checks that they exist.
+struct Fixture {
+    fs::path dir;
+    Fixture() {
+        dir = fs::temp_directory_path() / ("stipple-matrix-test-" + std::to_string(::getpid()));
+        fs::create_directories(dir / "scenes");
+        std::ofstream(dir / "scenes" / "box.yaml") << "name: box\n";
+        std::ofstream(dir / "scenes" / "mis.yaml") << "name: mis\n";
+    }
+    ~Fixture() { fs::remove_all(dir); }
+    std::string path() const { return (dir / "m.yaml").string(); }
+};
+
+const char* good = R"(name: tiny
+scenes:
+  - file: scenes/box.yaml
+    width: 32
+    height: 24
+  - { file: scenes/mis.yaml, name: veach }
+patterns: [independent, stratified, poisson]
+spp: [16, 4]
+seeds: 4
+reference: { spp: 256, seed: 99 }
+checks:
+  - { type: ordering, scene: box, spp_min: 16, order: [stratified, independent], not_separated: pass }
+  - { type: slope, scene: veach, pattern: independent, expected: -0.5, tolerance: 0.1 }
+  - { type: time_ratio, scene: all, numerator: poisson, denominator: stratified, max: 1.05 }
+  - { type: time_ceiling, seconds: 5 }
+)";
+
+// Expects MatrixError whose message contains every piece.
+void expectError(const Fixture& f, const std::string& text, std::vector<std::string> pieces) {
+    try {
+        parseMatrix(text, f.path());
+        BOOST_ERROR("no error for:\n" + text);
+    } catch (const MatrixError& e) {
+        std::string msg = e.what();
+        for (const auto& p : pieces) BOOST_CHECK_MESSAGE(msg.find(p) != std::string::npos, "'" << p << "' not in: " << msg);
+    }
+}
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+    auto at = s.find(from);
+    BOOST_REQUIRE(at != std::string::npos);
+    return s.replace(at, from.size(), to);
+}
+} // namespace
+
+BOOST_AUTO_TEST_CASE(good_matrix_reads) {
+    Fixture f;
+    Matrix m = parseMatrix(good, f.path());
+    BOOST_CHECK_EQUAL(m.name, "tiny");
+    BOOST_REQUIRE_EQUAL(m.scenes.size(), 2u);
+    BOOST_CHECK_EQUAL(m.scenes[0].name, "box"); // default: file stem
+    BOOST_CHECK_EQUAL(m.scenes[0].width, 32);
+    BOOST_CHECK_EQUAL(m.scenes[1].name, "veach");
+    BOOST_CHECK(fs::exists(m.scenes[1].path));
+    BOOST_CHECK((m.spp == std::vector<uint32_t>{4, 16})); // sorted
+    BOOST_CHECK((m.seeds == std::vector<uint64_t>{1, 2, 3, 4}));
+    BOOST_CHECK_EQUAL(m.reference.spp, 256u);
+    BOOST_CHECK_EQUAL(m.reference.pattern, "independent");
+    BOOST_REQUIRE_EQUAL(m.checks.size(), 4u);
+    BOOST_CHECK(m.checks[0].type == CheckType::Ordering);
+    BOOST_CHECK(!m.checks[0].notSeparatedFails);
+    BOOST_CHECK_EQUAL(m.checks[0].where, f.path() + ":12:5");
+    BOOST_CHECK(m.checks[2].type == CheckType::TimeRatio);
+    BOOST_CHECK_EQUAL(m.checks[2].spp, 16u); // default: the largest
+    BOOST_CHECK_EQUAL(m.checks[3].scene, "all");
+}
+
+BOOST_AUTO_TEST_CASE(yaml_syntax_error_has_line_and_column) {
+    Fixture f;
+    expectError(f, "name: x\nscenes:\n  - file: a\n   width: 3\n", {f.path() + ":4:4", "end of sequence not found"});
+    expectError(f, "patterns: [independent, stratified\nspp: 4\n", {f.path() + ":2:"});
+}
+
+BOOST_AUTO_TEST_CASE(unknown_names_are_named) {
+    Fixture f;
+    expectError(f, replaced(good, "scenes/mis.yaml", "scenes/nope.yaml"),
+                {f.path() + ":6:5", "unknown scene file 'scenes/nope.yaml'"});
+    expectError(f, replaced(good, "[independent, stratified, poisson]", "[independent, halton]"),
+                {f.path() + ":7:", "unknown pattern 'halton'", "poisson-seed"});
+    expectError(f, replaced(good, "type: slope", "type: variance"), {f.path() + ":13:13", "unknown check type 'variance'"});
+    expectError(f, replaced(good, "scene: veach", "scene: cornell"),
+                {f.path() + ":13:27", "unknown scene 'cornell'", "box, veach"});
+    expectError(f, replaced(good, "numerator: poisson", "numerator: poisson-seed"),
+                {":14:48", "'poisson-seed' is not among the matrix's patterns"});
+    expectError(f, replaced(good, "seeds: 4", "sedes: 4"), {f.path() + ":9:1", "unknown key 'sedes'"});
+}
+
+BOOST_AUTO_TEST_CASE(bad_values_are_errors) {
+    Fixture f;
+    expectError(f, replaced(good, "seeds: 4", "seeds: 3"), {f.path() + ":9:", "K ≥ 4"});
+    expectError(f, replaced(good, "seeds: 4", "seeds: many"), {f.path() + ":9:8", "cannot read seeds from 'many'"});
+    expectError(f, replaced(good, "spp: 256", "spp: 32"), {"must be ≥ 4× the largest cell spp"});
+    expectError(f, replaced(good, "width: 32", "width: -2"), {f.path() + ":4:12", "width must be in"});
+    expectError(f, replaced(good, "seed: 99", "seed: 3"), {"reference seed must differ"});
+    expectError(f, replaced(good, "max: 1.05", "max: 0"), {":14:87", "max must be > 0"});
+    expectError(f, "- a\n- b\n", {f.path() + ":1:1", "must be a YAML map"});
+}
+
+BOOST_AUTO_TEST_CASE(missing_file_is_named) {
+    BOOST_CHECK_EXCEPTION(loadMatrix("no/such/matrix.yaml"), MatrixError, [](const MatrixError& e) {
+        return std::string(e.what()).find("no/such/matrix.yaml") != std::string::npos;
+    });
+}
