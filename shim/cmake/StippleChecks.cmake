@@ -1,0 +1,1 @@
+# StippleChecks.cmake — CTest checks of the library as a product (placeholder filled below).

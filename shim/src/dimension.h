@@ -1,0 +1,25 @@
+// dimension.h — one validated entry of a sampler's dimension layout, with what its pattern precomputed.
+#pragma once
+
+#include "poisson_cache.h"
+#include "strata_grid.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace stipple {
+
+struct Dimension {
+  uint32_t arity = 1;     // floats per value
+  uint32_t count = 1;     // k values per pixel sample
+  uint32_t setSize = 1;   // M = k * N points in the pixel's set
+  std::string name;
+  StrataGrid grid;                                // stratified only
+  std::shared_ptr<const PoissonFamily> poisson;  // poisson only
+
+  uint32_t floatsPerPixel() const { return setSize * arity; }
+  uint32_t floatsPerSample() const { return count * arity; }
+};
+
+}  // namespace stipple

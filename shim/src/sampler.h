@@ -1,0 +1,52 @@
+// sampler.h — the object behind a stipple_sampler handle: immutable after creation, shared by threads.
+#pragma once
+
+#include "dimension.h"
+
+#include <stipple/stipple.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace stipple {
+
+class Sampler {
+ public:
+  Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions);
+
+  uint32_t pattern() const { return pattern_; }
+  uint32_t samplesPerPixel() const { return samplesPerPixel_; }
+  uint64_t seed() const { return seed_; }
+  uint32_t dimensionCount() const { return static_cast<uint32_t>(dimensions_.size()); }
+  const Dimension& dimension(uint32_t d) const { return dimensions_[d]; }
+
+  // Arguments are checked by the ABI layer; these only compute.
+  void fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const;
+  void sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, float* out) const;
+  void sampleIndependent(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t stream, float* out,
+                         size_t count) const;
+
+ private:
+  uint64_t key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
+
+  uint32_t pattern_;
+  uint32_t samplesPerPixel_;
+  uint64_t seed_;
+  std::vector<Dimension> dimensions_;
+};
+
+}  // namespace stipple
+
+// The opaque handle type of the C ABI is the sampler itself.
+struct stipple_sampler_t : stipple::Sampler {
+  using stipple::Sampler::Sampler;
+};
+
+namespace stipple {
+
+// Validates desc completely (every message names the argument, its value and what was expected) and builds
+// the sampler. Throws stipple::Error.
+stipple_sampler_t* createSampler(const stipple_sampler_desc& desc);
+
+}  // namespace stipple

@@ -1,0 +1,35 @@
+// strata_grid.h — the grid of strata of one stratified set of M points in 1, 2 or 3 dimensions.
+//
+// Rule (documented in shim/README.md):
+//  - 1D: M strata.
+//  - 2D/3D, exact: the most-square (most-cubic) factorisation of M into per-axis counts, used when the largest
+//    count is at most twice the smallest. Axis 0 (x) gets the largest count, the last axis the smallest.
+//  - 2D/3D, padded (primes and other awkward M): n = ceil(M^(1/d)) strata on every axis but the last, and
+//    L = ceil(M / n^(d-1)) on the last, so the grid has G >= M cells and s = G - M < n^(d-1) cells stay empty.
+//    The grid is read as n^(d-1) "lines" of L cells along the last axis. s distinct lines, chosen by a hashed
+//    permutation of the lines, each leave out one cell, at positions (t + offset) mod L spread evenly along the
+//    last axis. Every cell is thus left out with the same probability s/G, so every sample is uniformly
+//    distributed; each used cell holds exactly one sample; no cell of the grid is ever used twice.
+#pragma once
+
+#include <cstdint>
+
+namespace stipple {
+
+struct StrataGrid {
+  uint32_t arity = 1;
+  uint32_t points = 1;       // M
+  uint32_t axis[3] = {1, 1, 1};  // strata per axis
+  uint32_t lineLength = 1;   // L = axis[arity - 1]
+  uint32_t lineCount = 1;    // product of the other axes
+  uint32_t emptyCells = 0;   // s = cells - M (0 for an exact factorisation)
+
+  static StrataGrid choose(uint32_t arity, uint32_t points);
+  bool padded() const { return emptyCells != 0; }
+
+  // The cell of set point q (0 <= q < M), given the set's line permutation seed and empty-cell offset.
+  // Set points are ordered line by line in permuted line order; the first s lines are the ones with a hole.
+  void cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const;
+};
+
+}  // namespace stipple
