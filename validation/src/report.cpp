@@ -185,12 +185,12 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
     }
 
     o << "<h2>Scenes</h2>\n<table><tr><th>scene</th><th>file</th><th>integrator</th><th>size</th><th>triangles</th>"
-         "<th>load s</th><th>BVH build s</th><th>reference spp</th><th>reference s</th><th>noise floor (MSE)</th>"
+         "<th>load s</th><th>BVH build s</th><th>warm-up s</th><th>reference spp</th><th>reference s</th><th>noise floor (MSE)</th>"
          "<th>reference key</th></tr>\n";
     for (const auto& s : r.scenes)
         o << "<tr><td>" << html(s.name) << "</td><td style=\"text-align:left\">" << html(s.file) << "</td><td>"
           << html(s.integrator) << "</td><td>" << s.width << "×" << s.height << "</td><td>" << s.triangles << "</td>"
-          << fmt("<td>%.3f</td><td>%.3f</td><td>%u</td><td>%s</td><td>%.4g</td>", s.loadSeconds, s.buildSeconds,
+          << fmt("<td>%.3f</td><td>%.3f</td><td>%.3f</td><td>%u</td><td>%s</td><td>%.4g</td>", s.loadSeconds, s.buildSeconds, s.warmupSeconds,
                  s.referenceSpp, s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached",
                  s.noiseFloor)
           << "<td>" << html(s.referenceKey) << "</td></tr>\n";

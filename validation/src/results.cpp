@@ -175,6 +175,7 @@ void writeResultsJson(const std::string& path, const Results& results, const std
           << ", \"content_hash\": " << jsonString(s.contentHash) << ", \"integrator\": " << jsonString(s.integrator)
           << ", \"width\": " << s.width << ", \"height\": " << s.height << ", \"triangles\": " << s.triangles
           << ", \"load_seconds\": " << jsonNumber(s.loadSeconds) << ", \"build_seconds\": " << jsonNumber(s.buildSeconds)
+          << ", \"warmup_seconds\": " << jsonNumber(s.warmupSeconds)
           << ", \"reference_key\": " << jsonString(s.referenceKey) << ", \"reference_spp\": " << s.referenceSpp
           << ", \"reference_seconds\": " << jsonNumber(s.referenceSeconds)
           << ", \"noise_floor\": " << jsonNumber(s.noiseFloor) << "}";
@@ -252,6 +253,7 @@ Results readResultsJson(const std::string& path) {
             i.triangles = s["triangles"].as<uint64_t>(0);
             i.loadSeconds = number(s["load_seconds"]);
             i.buildSeconds = number(s["build_seconds"]);
+            i.warmupSeconds = number(s["warmup_seconds"]);
             i.referenceKey = s["reference_key"].as<std::string>("");
             i.referenceSpp = s["reference_spp"].as<uint32_t>(0);
             i.referenceSeconds = number(s["reference_seconds"]);

@@ -30,6 +30,7 @@ struct SceneInfo {
     int width = 0, height = 0;
     uint64_t triangles = 0;
     double loadSeconds = 0, buildSeconds = 0; // reported apart from the cells' render seconds
+    double warmupSeconds = 0;                 // untimed warm-up renders (one small render per pattern × spp)
     std::string referenceKey;                 // cache key of the reference
     uint32_t referenceSpp = 0;
     double referenceSeconds = 0;              // 0 when it came from the cache

@@ -1,0 +1,47 @@
+#include "progress.h"
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace stipple::validation {
+
+Progress::Progress(size_t total) : total_(total), tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+
+std::string Progress::eta() const {
+    if (done_ == 0) return "?";
+    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    double remaining = elapsed / double(done_) * double(total_ - done_);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%dm%02ds", int(remaining) / 60, int(remaining) % 60);
+    return buf;
+}
+
+void Progress::step(const std::string& what) {
+    ++done_;
+    if (tty_) {
+        const int width = 30;
+        int filled = total_ ? int(double(done_) / double(total_) * width) : width;
+        std::string bar(size_t(filled), '#');
+        bar.resize(width, '.');
+        std::fprintf(stderr, "\r\033[K[%s] %zu/%zu cells, ETA %s  %.60s", bar.c_str(), done_, total_, eta().c_str(),
+                     what.c_str());
+        barShown_ = true;
+    } else {
+        std::fprintf(stderr, "[%zu/%zu] %s (ETA %s)\n", done_, total_, what.c_str(), eta().c_str());
+    }
+    std::fflush(stderr);
+}
+
+void Progress::note(const std::string& message) {
+    if (tty_ && barShown_) std::fprintf(stderr, "\r\033[K");
+    std::fprintf(stderr, "%s\n", message.c_str());
+    barShown_ = false;
+    std::fflush(stderr);
+}
+
+void Progress::finish() {
+    if (tty_ && barShown_) std::fprintf(stderr, "\n");
+    barShown_ = false;
+}
+
+} // namespace stipple::validation

@@ -1,0 +1,90 @@
+#include "reference_cache.h"
+
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+
+#include "image_metrics.h"
+#include "report.h"
+#include "results.h"
+
+namespace stipple::validation {
+
+namespace fs = std::filesystem;
+
+namespace {
+uint64_t fnv1a(const std::string& s) {
+    uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : s) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+} // namespace
+
+std::string referenceKey(const render::Scene& scene, const render::RenderOptions& o) {
+    std::string material = scene.contentHash() + "|" + render::rendererVersion() + "|" + std::to_string(o.width) +
+                           "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
+                           std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " +
+                           std::to_string(o.maxDepth);
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)fnv1a(material));
+    return buf;
+}
+
+Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
+                                const render::RenderOptions& options, const std::string& cacheDir) {
+    Reference ref;
+    ref.key = referenceKey(scene, options);
+    const std::string stem = (fs::path(cacheDir) / (safeName(scene.name()) + "-" + ref.key)).string();
+    ref.imagePath = stem + ".exr";
+    const std::string variancePath = stem + ".variance.exr", provenancePath = stem + ".json";
+
+    if (fs::exists(provenancePath) && fs::exists(ref.imagePath) && fs::exists(variancePath)) {
+        ref.image = render::readImage(ref.imagePath);
+        ref.variance = render::readImage(variancePath);
+        if (ref.image.width == options.width && ref.image.height == options.height &&
+            ref.variance.width == options.width && ref.variance.height == options.height) {
+            ref.fromCache = true;
+            return ref;
+        }
+        // A size that does not match its key means a damaged entry: render it again.
+    }
+
+    fs::create_directories(cacheDir);
+    render::RenderResult r = scene.render(options);
+    ref.image = std::move(r.image);
+    ref.variance = std::move(r.variance);
+    ref.renderSeconds = r.renderSeconds;
+
+    std::time_t now = std::time(nullptr);
+    char when[32];
+    std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    std::vector<std::pair<std::string, std::string>> meta = {
+        {"stipple:scene", scene.name()},          {"stipple:contentHash", scene.contentHash()},
+        {"stipple:rendererVersion", render::rendererVersion()},
+        {"stipple:pattern", options.pattern},     {"stipple:spp", std::to_string(options.spp)},
+        {"stipple:seed", std::to_string(options.seed)}, {"stipple:integrator", options.integrator},
+        {"stipple:referenceKey", ref.key}};
+    render::writeExr(variancePath, ref.variance, meta);
+    render::writeExr(ref.imagePath, ref.image, meta);
+    std::string json = "{\n  \"key\": " + jsonString(ref.key) + ",\n  \"scene\": " + jsonString(scene.name()) +
+                       ",\n  \"scene_file\": " + jsonString(sceneFile) +
+                       ",\n  \"content_hash\": " + jsonString(scene.contentHash()) +
+                       ",\n  \"renderer_version\": " + jsonString(render::rendererVersion()) +
+                       ",\n  \"width\": " + std::to_string(options.width) +
+                       ",\n  \"height\": " + std::to_string(options.height) +
+                       ",\n  \"pattern\": " + jsonString(options.pattern) +
+                       ",\n  \"spp\": " + std::to_string(options.spp) + ",\n  \"seed\": " + std::to_string(options.seed) +
+                       ",\n  \"integrator\": " + jsonString(options.integrator) +
+                       ",\n  \"max_depth\": " + std::to_string(options.maxDepth) +
+                       ",\n  \"render_seconds\": " + jsonNumber(r.renderSeconds) +
+                       ",\n  \"non_finite_samples\": " + std::to_string(r.nonFiniteSamples) +
+                       ",\n  \"noise_floor\": " + jsonNumber(noiseFloor(ref.variance)) +
+                       ",\n  \"layout\": " + jsonString(r.layout) + ",\n  \"created\": " + jsonString(when) + "\n}\n";
+    writeTextFile(provenancePath, json);
+    return ref;
+}
+
+} // namespace stipple::validation

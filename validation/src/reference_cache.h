@@ -1,0 +1,29 @@
+// The reference image of a scene (independent pattern at high spp), rendered once and cached as EXR + the
+// variance-of-the-mean EXR + provenance JSON, keyed by everything that changes its pixels.
+#pragma once
+
+#include <string>
+
+#include <stipple/render/renderer.h>
+
+namespace stipple::validation {
+
+struct Reference {
+    render::Image image;
+    render::Image variance;   // per-pixel, per-channel variance of the mean
+    std::string key;          // 16 hex digits
+    std::string imagePath;    // the cached EXR
+    double renderSeconds = 0; // 0 when read from the cache
+    bool fromCache = false;
+};
+
+// Key over scene content hash, renderer version, resolution, spp, seed, pattern, integrator and depth.
+std::string referenceKey(const render::Scene& scene, const render::RenderOptions& options);
+
+// Returns the cached reference for these options, or renders it (options.threads, .pattern, .spp, .seed,
+// size, integrator and depth as given) and stores it under cacheDir. The provenance JSON is written last
+// and marks an entry complete, so a crash mid-write leaves no entry that looks valid.
+Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
+                                const render::RenderOptions& options, const std::string& cacheDir);
+
+} // namespace stipple::validation
