@@ -4,6 +4,7 @@
 // sequentially; `order` maps a sorted slot back to the caller's point index.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,6 +16,7 @@ struct CellGrid {
     std::vector<uint32_t> cellStart;  // size G^D + 1
     std::vector<uint32_t> order;      // sorted slot -> input index
     std::vector<float> sorted;        // D floats per slot, in cell order
+    std::vector<uint32_t> cellOfPoint, fill;  // scratch, kept to avoid reallocating on every rebuild
 
     static int cellOf(float x, int g) {
         int c = int(x * float(g));
@@ -31,7 +33,7 @@ struct CellGrid {
         uint32_t cells = 1;
         for (int k = 0; k < D; ++k) cells *= uint32_t(g);
         cellStart.assign(cells + 1, 0);
-        std::vector<uint32_t> cellOfPoint(n);
+        cellOfPoint.resize(n);
         for (uint32_t i = 0; i < n; ++i) {
             int c[D];
             for (int k = 0; k < D; ++k) c[k] = cellOf(points[size_t(i) * D + k], g);
@@ -41,7 +43,7 @@ struct CellGrid {
         for (uint32_t c = 0; c < cells; ++c) cellStart[c + 1] += cellStart[c];
         order.resize(n);
         sorted.resize(size_t(n) * D);
-        std::vector<uint32_t> fill(cellStart.begin(), cellStart.end() - 1);
+        fill.assign(cellStart.begin(), cellStart.end() - 1);
         for (uint32_t i = 0; i < n; ++i) {
             uint32_t slot = fill[cellOfPoint[i]]++;
             order[slot] = i;

@@ -29,6 +29,8 @@ constexpr float kShrink = 0.75f;
 
 std::vector<float> dartThrowing1D(uint32_t n, SplitMix64 &rng) {
     std::set<float> accepted;
+    std::vector<float> order;  // insertion order, as in 2D/3D (the set itself is sorted)
+    order.reserve(n);
     float r = 1.0f / float(n);
     int failures = 0;
     auto distance = [](float a, float b) { return std::fabs(torusDelta(a, b)); };
@@ -44,13 +46,14 @@ std::vector<float> dartThrowing1D(uint32_t n, SplitMix64 &rng) {
         }
         if (free) {
             accepted.insert(x);
+            order.push_back(x);
             failures = 0;
         } else if (++failures == kTryLimit) {
             r *= kShrink;
             failures = 0;
         }
     }
-    return std::vector<float>(accepted.begin(), accepted.end());
+    return order;
 }
 
 template <int D>
