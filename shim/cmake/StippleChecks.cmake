@@ -1,1 +1,42 @@
-# StippleChecks.cmake — CTest checks of the library as a product (placeholder filled below).
+# StippleChecks.cmake — CTest checks of the library as a product: exported surface, ABI, header, example hosts.
+
+# The header compiles as strict C99 and as strict C++ (a compile-only test; it also builds as a target below).
+add_test(NAME shim.header_c99
+  COMMAND ${CMAKE_C_COMPILER} -std=c99 -pedantic -Wall -Wextra -Werror -fsyntax-only
+          -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_c99.c)
+add_test(NAME shim.header_cxx
+  COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -x c++ -pedantic -Wall -Wextra -Werror -fsyntax-only
+          -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_c99.c)
+set_tests_properties(shim.header_c99 shim.header_cxx PROPERTIES LABELS unit)
+add_library(stipple_header_c99 OBJECT tests/header_c99.c)
+set_target_properties(stipple_header_c99 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+target_compile_options(stipple_header_c99 PRIVATE -pedantic -Wall -Wextra -Werror)
+target_link_libraries(stipple_header_c99 PRIVATE stipple_headers)
+
+# Only stipple_* exported, SONAME libstipple.so.1.
+add_test(NAME shim.exports
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-exports.sh $<TARGET_FILE:stipple>
+          ${CMAKE_CURRENT_SOURCE_DIR}/include/stipple/stipple.h)
+set_tests_properties(shim.exports PROPERTIES LABELS unit)
+
+# abidiff against the committed baseline; fails on an incompatible change.
+find_program(STIPPLE_ABIDIFF abidiff)
+if(STIPPLE_ABIDIFF)
+  add_test(NAME shim.abi COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-abi.sh $<TARGET_FILE:stipple>)
+  set_tests_properties(shim.abi PROPERTIES LABELS unit)
+else()
+  message(WARNING "abidiff (abigail-tools) not found: the shim.abi test is not registered")
+endif()
+
+# The example hosts: each prints its error table and asserts stratified < independent (see the sources).
+add_test(NAME shim.quarter_disk_c COMMAND quarter_disk)
+set_tests_properties(shim.quarter_disk_c PROPERTIES LABELS "statistical")
+# A sanitizer build's library cannot be dlopened by an uninstrumented python3.
+if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+  find_program(STIPPLE_PYTHON3 python3)
+  if(STIPPLE_PYTHON3)
+    add_test(NAME shim.quarter_disk_py
+      COMMAND ${STIPPLE_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/examples/quarter_disk.py $<TARGET_FILE:stipple>)
+    set_tests_properties(shim.quarter_disk_py PROPERTIES LABELS "statistical")
+  endif()
+endif()

@@ -21,7 +21,7 @@ constexpr const char* kPatternNames[STIPPLE_PATTERN_COUNT] = {"independent", "st
 
 const stipple::Sampler& checkedSampler(stipple_sampler sampler) {
   requireNonNull(sampler, "sampler");
-  return *sampler;
+  return *stipple::fromHandle(sampler);
 }
 
 void checkDimension(const stipple::Sampler& sampler, uint32_t dimension) {
@@ -99,12 +99,12 @@ STIPPLE_API stipple_status stipple_sampler_create(const stipple_sampler_desc* de
     requireNonNull(out_sampler, "out_sampler");
     *out_sampler = nullptr;
     requireNonNull(desc, "desc");
-    *out_sampler = stipple::createSampler(*desc);
+    *out_sampler = stipple::toHandle(stipple::createSampler(*desc));
   });
 }
 
 STIPPLE_API stipple_status stipple_sampler_release(stipple_sampler sampler) {
-  return callGuarded(__func__, [&] { delete sampler; });
+  return callGuarded(__func__, [&] { delete stipple::fromHandle(sampler); });
 }
 
 STIPPLE_API stipple_status stipple_sampler_get_info(stipple_sampler sampler, stipple_sampler_info* out_info) {

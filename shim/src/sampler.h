@@ -36,17 +36,13 @@ class Sampler {
   std::vector<Dimension> dimensions_;
 };
 
-}  // namespace stipple
-
-// The opaque handle type of the C ABI is the sampler itself.
-struct stipple_sampler_t : stipple::Sampler {
-  using stipple::Sampler::Sampler;
-};
-
-namespace stipple {
-
 // Validates desc completely (every message names the argument, its value and what was expected) and builds
 // the sampler. Throws stipple::Error.
-stipple_sampler_t* createSampler(const stipple_sampler_desc& desc);
+Sampler* createSampler(const stipple_sampler_desc& desc);
+
+// The C handle (stipple_sampler_t*) is a Sampler* in disguise. struct stipple_sampler_t is never defined, so
+// the library's debug info (and the ABI baseline made from it) shows the handle as opaque, as hosts see it.
+inline stipple_sampler toHandle(Sampler* sampler) { return reinterpret_cast<stipple_sampler>(sampler); }
+inline Sampler* fromHandle(stipple_sampler handle) { return reinterpret_cast<Sampler*>(handle); }
 
 }  // namespace stipple

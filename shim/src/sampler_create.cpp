@@ -65,7 +65,7 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
 
 }  // namespace
 
-stipple_sampler_t* createSampler(const stipple_sampler_desc& desc) {
+Sampler* createSampler(const stipple_sampler_desc& desc) {
   constexpr size_t kDescSize = sizeof(stipple_sampler_desc);
   if (desc.struct_size < kDescSize)
     throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->struct_size is " + std::to_string(desc.struct_size) +
@@ -109,7 +109,7 @@ stipple_sampler_t* createSampler(const stipple_sampler_desc& desc) {
     requireZeroTail(bytes, kDimensionSize, stride, "desc->dimensions[" + std::to_string(d) + "]");
     dimensions.push_back(makeDimension(entry, d, desc.pattern, desc.samples_per_pixel));
   }
-  return new stipple_sampler_t(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions));
+  return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions));
 }
 
 }  // namespace stipple
