@@ -267,16 +267,17 @@ TownStats generateTown(uint64_t seed, const std::string& outDir, const std::stri
 
     // --- the piazza: fountain, lamps along its edge and down the via
     w.comment("the piazza");
-    w.instance({"fountain", 0, {0, 0, 14}});
+    w.instance({"fountain", 0, {0, 0, 11.5}});
     const double edge = kBlock / 2 + kStreet;
     for (int i = -2; i <= 2; ++i) {
+        // the south edge's lamps are shifted so that one stands just left of the via's mouth
+        w.instance({"street_lamp", 180, {i * 9.0 - 2.2, 0, edge - 1.7}});
         if (i == 0) continue;
-        w.instance({"street_lamp", 180, {i * 9.0, 0, edge - 0.8}});
         w.instance({"street_lamp", 0, {i * 9.0, 0, -edge + 0.8}});
         w.instance({"street_lamp", 90, {-edge + 0.8, 0, i * 9.0}});
         w.instance({"street_lamp", 270, {edge - 0.8, 0, i * 9.0}});
     }
-    for (int i = 0; i < 3; ++i) w.instance({"street_lamp", i % 2 ? 90.0 : 270.0, {i % 2 ? -1.45 : 1.45, 0, 30.0 + 12 * i}});
+    for (int i = 0; i < 3; ++i) w.instance({"street_lamp", i % 2 ? 90.0 : 270.0, {i % 2 ? -1.45 : 1.45, 0, 38.0 + 12 * i}});
 
     // --- ground: the town's streets, the piazza paving a step up, and open land out to the horizon
     w.comment("ground");
