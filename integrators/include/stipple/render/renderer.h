@@ -4,10 +4,17 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace stipple::render {
+
+// A scene file that cannot be loaded: the message names file:line:column, the key and what was expected.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 // Version string of the renderer; part of every reference-cache key.
 const char* rendererVersion();
@@ -32,6 +39,7 @@ struct RenderOptions {
     int maxDepth = -1;                  // -1: the scene's
     int threads = 0;                    // 0: all hardware threads
     bool progress = false;              // progress bar on stderr when it is a TTY
+    std::string shim;                   // path of libstipple.so.1; empty: $STIPPLE_SHIM, then beside the executable
 };
 
 struct RenderResult {
