@@ -6,7 +6,7 @@
 #include "patterns.h"
 #include "permutation.h"
 
-#include <cmath>
+#include <bit>
 
 namespace stipple {
 
@@ -23,13 +23,14 @@ struct StratifiedSet {
         jitterKey(hashCombine(key, 3)) {}
 };
 
-// (cell + u) / strata rounded to float, then nudged by one ulp if rounding crossed the stratum's border, so
-// floor(value * strata) == cell holds exactly and 1.0 never occurs.
-inline float jittered(uint32_t cell, uint32_t strata, double u) {
-  float value = static_cast<float>((double(cell) + u) / double(strata));
+// (cell + u) / strata with a 32-bit jitter u, rounded to float, then moved by one ulp if rounding crossed the
+// stratum's border, so floor(value * strata) == cell holds exactly and 1.0 never occurs. Rounding moves the
+// value by less than one ulp and a stratum spans at least 2 ulps (strata <= 2^22), so one step suffices.
+inline float jittered(uint32_t cell, uint32_t strata, double inverseStrata, uint32_t jitter) {
+  float value = static_cast<float>((double(cell) + double(jitter) * 0x1p-32) * inverseStrata);
   const double scaled = double(value) * strata;  // exact: 24-bit mantissa times <= 2^22
-  if (scaled >= double(cell) + 1.0) value = std::nextafter(value, 0.0f);
-  else if (scaled < double(cell)) value = std::nextafter(value, 1.0f);
+  if (scaled >= double(cell) + 1.0) value = std::bit_cast<float>(std::bit_cast<uint32_t>(value) - 1);
+  else if (scaled < double(cell)) value = std::bit_cast<float>(std::bit_cast<uint32_t>(value) + 1);
   return value;
 }
 
@@ -38,9 +39,14 @@ inline void stratifiedPoint(const StratifiedSet& set, const Dimension& dim, uint
   const uint32_t q = permuteIndex(p, dim.setSize, set.orderSeed);
   uint32_t cell[3];
   grid.cellOf(q, set.lineSeed, set.holeOffset, cell);
-  const uint64_t first = uint64_t(q) * dim.arity;
-  for (uint32_t c = 0; c < dim.arity; ++c)
-    out[c] = jittered(cell[c], grid.axis[c], unitDouble(hashAt(set.jitterKey, first + c)));
+  // One 64-bit hash jitters two axes (32 bits each).
+  const uint64_t bits01 = hashAt(set.jitterKey, uint64_t(q) * 2);
+  out[0] = jittered(cell[0], grid.axis[0], grid.inverseAxis[0], static_cast<uint32_t>(bits01 >> 32));
+  if (dim.arity == 1) return;
+  out[1] = jittered(cell[1], grid.axis[1], grid.inverseAxis[1], static_cast<uint32_t>(bits01));
+  if (dim.arity == 2) return;
+  const uint64_t bits2 = hashAt(set.jitterKey, uint64_t(q) * 2 + 1);
+  out[2] = jittered(cell[2], grid.axis[2], grid.inverseAxis[2], static_cast<uint32_t>(bits2 >> 32));
 }
 
 }  // namespace

@@ -71,27 +71,32 @@ StrataGrid StrataGrid::choose(uint32_t arity, uint32_t points) {
   grid.lineCount = 1;
   for (uint32_t c = 0; c + 1 < arity; ++c) grid.lineCount *= grid.axis[c];
   grid.emptyCells = grid.lineLength * grid.lineCount - points;
+  for (uint32_t c = 0; c < 3; ++c) grid.inverseAxis[c] = 1.0 / grid.axis[c];
+  grid.lineDivider = FastDivider(grid.lineLength);
+  grid.shortLineDivider = FastDivider(grid.lineLength > 1 ? grid.lineLength - 1 : 1);
+  grid.axis0Divider = FastDivider(grid.axis[0]);
   return grid;
 }
 
 void StrataGrid::cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const {
   uint32_t line, position;
   if (emptyCells == 0) {
-    line = q / lineLength;
+    line = lineDivider.divide(q);
     position = q - line * lineLength;
   } else {
     const uint32_t shortLength = lineLength - 1;
     const uint64_t inShortLines = uint64_t(emptyCells) * shortLength;
     uint32_t t;
     if (q < inShortLines) {
-      t = q / shortLength;
+      t = shortLineDivider.divide(q);
       position = q - t * shortLength;
       const uint32_t hole = static_cast<uint32_t>((uint64_t(t) + holeOffset) % lineLength);
       position += position >= hole ? 1 : 0;
     } else {
       const uint32_t rest = static_cast<uint32_t>(q - inShortLines);
-      t = emptyCells + rest / lineLength;
-      position = rest % lineLength;
+      const uint32_t lines = lineDivider.divide(rest);
+      t = emptyCells + lines;
+      position = rest - lines * lineLength;
     }
     line = permuteIndex(t, lineCount, lineSeed);
   }
@@ -99,8 +104,8 @@ void StrataGrid::cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint
   if (arity == 2) {
     cell[0] = line;
   } else if (arity == 3) {
-    cell[0] = line % axis[0];
-    cell[1] = line / axis[0];
+    cell[1] = axis0Divider.divide(line);
+    cell[0] = line - cell[1] * axis[0];
   }
 }
 

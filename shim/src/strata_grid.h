@@ -12,6 +12,8 @@
 //    distributed; each used cell holds exactly one sample; no cell of the grid is ever used twice.
 #pragma once
 
+#include "fast_divider.h"
+
 #include <cstdint>
 
 namespace stipple {
@@ -23,6 +25,8 @@ struct StrataGrid {
   uint32_t lineLength = 1;   // L = axis[arity - 1]
   uint32_t lineCount = 1;    // product of the other axes
   uint32_t emptyCells = 0;   // s = cells - M (0 for an exact factorisation)
+  double inverseAxis[3] = {1, 1, 1};
+  FastDivider lineDivider, shortLineDivider, axis0Divider;  // by L, L - 1 (padded only), axis[0]
 
   static StrataGrid choose(uint32_t arity, uint32_t points);
   bool padded() const { return emptyCells != 0; }
