@@ -34,10 +34,11 @@ struct Tuning {
     double diameter, target, accept;
     float omega;
     int maxPasses;
+    double perCell;  // points per coarse stratum of the start
 };
 Tuning tuningFor(int dim) {
-    if (dim == 2) return {0.89, 0.86, 0.855, 1.6f, 100};
-    return {0.88, 0.84, 0.835, 1.5f, 100};
+    if (dim == 2) return {0.89, 0.86, 0.855, 1.6f, 100, 4.0};
+    return {0.88, 0.84, 0.835, 1.5f, 100, 8.0};
 }
 
 // Retries of a set that misses `accept`; tiny sets cost nothing, so they get more tries at their optimum.
@@ -53,29 +54,24 @@ void shuffle(std::vector<float> &pts, uint32_t n, uint64_t seed) {
     }
 }
 
-// A start with the right density everywhere: N points over rows (and layers) whose counts differ by at
-// most one, each point jittered inside its own stratum. Unlike white noise it needs no long-range
-// transport of points, which is what makes relaxation from white noise slow (4x more passes). The row
-// structure does not survive the relaxation (anisotropy at the noise floor, POINTSETS.md).
-// (Best-of-6 candidate jitter, which avoids near-coincident starting pairs, saved only 1 pass in 13.)
+// The start: uniform random points, but stratified in coarse cells of about `perCell` points (counts
+// differing by at most one). Coarse strata fix the density at a scale of a few spacings, so the
+// relaxation needs no long-range transport (white noise needs ~4x more passes); inside a stratum the points
+// are free, so no lattice is imprinted. (One point per stratum, i.e. jittering, imprints its grid: the
+// relaxed sets then show Bragg peaks at the stratum frequency; see POINTSETS.md.)
 template <int D>
-void jitteredRows(std::vector<float> &pts, uint32_t n, SplitMix64 &rng) {
-    const uint32_t layers = D == 2 ? 1u : std::max(1u, uint32_t(std::lround(std::cbrt(double(n)))));
+void stratifiedStart(std::vector<float> &pts, uint32_t n, double perCell, SplitMix64 &rng) {
+    const uint32_t g = std::max(1u, uint32_t(std::lround(std::pow(double(n) / perCell, 1.0 / D))));
+    uint32_t cells = 1;
+    for (int k = 0; k < D; ++k) cells *= g;
     uint32_t written = 0;
-    for (uint32_t l = 0; l < layers; ++l) {
-        const uint32_t lfirst = uint32_t(uint64_t(n) * l / layers);
-        const uint32_t lcount = uint32_t(uint64_t(n) * (l + 1) / layers) - lfirst;
-        const uint32_t rows = std::max(1u, uint32_t(std::lround(std::sqrt(double(lcount)))));
-        for (uint32_t r = 0; r < rows; ++r) {
-            const uint32_t first = uint32_t(uint64_t(lcount) * r / rows);
-            const uint32_t count = uint32_t(uint64_t(lcount) * (r + 1) / rows) - first;
-            for (uint32_t i = 0; i < count; ++i, ++written) {
-                float *p = &pts[size_t(written) * D];
-                p[0] = clampBelowOne((i + rng.uniformDouble()) / count);
-                p[1] = clampBelowOne((r + rng.uniformDouble()) / rows);
-                if (D == 3) p[D - 1] = clampBelowOne((l + rng.uniformDouble()) / layers);
-            }
-        }
+    for (uint32_t c = 0; c < cells; ++c) {
+        const uint32_t count = uint32_t(uint64_t(n) * (c + 1) / cells - uint64_t(n) * c / cells);
+        uint32_t cell[D];
+        for (int k = 0, rest = int(c); k < D; ++k, rest /= int(g)) cell[k] = uint32_t(rest) % g;
+        for (uint32_t i = 0; i < count; ++i, ++written)
+            for (int k = 0; k < D; ++k)
+                pts[size_t(written) * D + k] = clampBelowOne((cell[k] + rng.uniformDouble()) / g);
     }
 }
 
@@ -91,7 +87,7 @@ std::vector<float> relaxedSet(uint32_t n, uint64_t seed, const Tuning &tuning) {
     for (int attempt = 0; attempt < maxAttempts(n); ++attempt) {
         SplitMix64 rng(deriveSeed(seed, uint64_t(attempt)));
         std::vector<float> pts(size_t(n) * D);
-        jitteredRows<D>(pts, n, rng);
+        stratifiedStart<D>(pts, n, tuning.perCell, rng);
         RelaxStats stats = relaxOverlaps<D>(pts, n, params);
         if (stats.minDistance > bestDistance) {
             bestDistance = stats.minDistance;
