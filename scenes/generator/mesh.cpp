@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace stipple::citygen {
 
 uint32_t Mesh::addVertex(Vec3 p) {
@@ -110,7 +112,7 @@ void Mesh::writePly(const std::string& path) const {
         out.push_back(char(3));
         for (int k = 0; k < 3; ++k) putU32(out, indices_[i + k]);
     }
-    std::string tmp = path + ".tmp";
+    std::string tmp = path + ".tmp" + std::to_string(::getpid()); // unique: two build trees may regenerate at once
     {
         std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
         if (!f) throw std::runtime_error("cannot write '" + tmp + "'");

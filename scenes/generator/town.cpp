@@ -13,6 +13,8 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 #include <vector>
 
 namespace stipple::citygen {
@@ -97,7 +99,7 @@ public:
             << objects_.str() << "shapes:\n"
             << shapes_.str();
         std::string path = (std::filesystem::path(outDir_) / (name_ + ".yaml")).string();
-        std::string tmp = path + ".tmp";
+        std::string tmp = path + ".tmp" + std::to_string(::getpid()); // unique: two build trees may regenerate at once
         {
             std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
             if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
