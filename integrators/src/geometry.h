@@ -108,7 +108,8 @@ inline float sqr(float v) { return v * v; }
 inline float cosTheta(const Vec3& w) { return w.z; }
 inline float absCosTheta(const Vec3& w) { return std::abs(w.z); }
 inline float cos2Theta(const Vec3& w) { return w.z * w.z; }
-inline float sin2Theta(const Vec3& w) { return std::max(0.0f, 1.0f - w.z * w.z); }
+// From x and y, not 1 - cos^2: exact near the pole, where GGX with alpha 0.001 lives (unit vectors only).
+inline float sin2Theta(const Vec3& w) { return w.x * w.x + w.y * w.y; }
 inline float tan2Theta(const Vec3& w) { return sin2Theta(w) / cos2Theta(w); }
 inline bool sameHemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0; }
 

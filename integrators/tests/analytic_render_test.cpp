@@ -1,0 +1,66 @@
+// Analytic renders (DESIGN.md section 6, as pbrt-v4's integrators_test):
+//  - the furnace sphere: camera inside a sphere of albedo 0.5 emitting 0.5 -> radiance exactly 1, for each
+//    pattern, path tracer;
+//  - a square light over a diffuse plane -> the closed-form radiance albedo * L * F, direct integrator.
+// Pass when |mean - expected| <= z * sigma + bias, where sigma bounds the standard deviation of the image mean
+// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 6
+// renders here, and bias is the stated deterministic allowance (0 for the sphere; 0.3% for the plane, whose
+// pixels see a patch 0.06 wide over which the exact radiance varies by less than 0.1%).
+#define BOOST_TEST_MODULE analytic_render
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.h"
+
+using namespace stipple::render;
+using namespace stipple::render::test;
+
+namespace {
+constexpr int kTests = 6;
+} // namespace
+
+BOOST_AUTO_TEST_CASE(furnace_sphere_is_one_for_every_pattern) {
+    auto scene = Scene::load(scenePath("furnace-sphere.yaml"));
+    double z = sidakZ(0.01, kTests);
+    for (const char* pattern : {"independent", "stratified", "poisson", "poisson-seed"}) {
+        RenderOptions o;
+        o.pattern = pattern;
+        o.seed = 7;
+        RenderResult r = scene->render(o);
+        ImageEstimate e = estimate(r);
+        double sigma = std::sqrt(e.variance);
+        BOOST_TEST_MESSAGE(pattern << ": mean " << e.mean << " sigma " << sigma);
+        BOOST_TEST(r.nonFiniteSamples == 0u);
+        BOOST_TEST(sigma > 0.0);
+        BOOST_TEST(std::abs(e.mean - 1.0) <= z * sigma, pattern << ": mean " << e.mean << ", expected 1 +- " << z * sigma);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(furnace_sphere_truncated_depth_matches_geometric_sum) {
+    // max_depth 2 (no Russian roulette before bounce 3): 0.5 * (1 + 0.5 + 0.25) = 0.875.
+    auto scene = Scene::load(scenePath("furnace-sphere.yaml"));
+    RenderOptions o;
+    o.maxDepth = 2;
+    o.seed = 11;
+    RenderResult r = scene->render(o);
+    ImageEstimate e = estimate(r);
+    double sigma = std::sqrt(e.variance);
+    BOOST_TEST(std::abs(e.mean - 0.875) <= sidakZ(0.01, kTests) * sigma, "mean " << e.mean << " sigma " << sigma);
+}
+
+BOOST_AUTO_TEST_CASE(square_light_over_plane_matches_form_factor) {
+    auto F = [](double X, double Y) { // corner form factor of a parallel rectangle (X, Y in units of height)
+        double a = std::sqrt(1 + X * X), b = std::sqrt(1 + Y * Y);
+        return (X / a * std::atan(Y / a) + Y / b * std::atan(X / b)) / (2 * M_PI);
+    };
+    double expected = 0.5 * 3.0 * 4 * F(0.5, 0.5);
+    auto scene = Scene::load(scenePath("quad-light-plane.yaml"));
+    RenderOptions o;
+    o.pattern = "independent";
+    o.seed = 3;
+    RenderResult r = scene->render(o);
+    ImageEstimate e = estimate(r);
+    double sigma = std::sqrt(e.variance), z = sidakZ(0.01, kTests);
+    BOOST_TEST_MESSAGE("plane: mean " << e.mean << " expected " << expected << " sigma " << sigma);
+    BOOST_TEST(std::abs(e.mean - expected) <= z * sigma + 0.003 * expected,
+               "mean " << e.mean << ", expected " << expected << " +- " << z * sigma + 0.003 * expected);
+}

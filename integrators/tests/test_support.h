@@ -1,0 +1,59 @@
+// Helpers shared by the renderer's tests: scene files in a temporary directory and image statistics.
+#pragma once
+
+#include <stipple/render/renderer.h>
+
+#include <boost/math/distributions/normal.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace stipple::render::test {
+
+inline std::string scenePath(const std::string& name) { return std::string(STIPPLE_TEST_SCENES) + "/" + name; }
+
+// Writes `text` to a fresh file in a per-process temporary directory and returns its path.
+inline std::string writeTempFile(const std::string& name, const std::string& text) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("stipple-render-test-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    fs::path p = dir / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p.string();
+}
+
+// Mean over pixels and channels, and a bound on the variance of that mean from the per-pixel variances.
+struct ImageEstimate {
+    double mean = 0;
+    double variance = 0;
+};
+
+inline ImageEstimate estimate(const RenderResult& r, int x0 = 0, int y0 = 0, int w = -1, int h = -1) {
+    if (w < 0) w = r.image.width;
+    if (h < 0) h = r.image.height;
+    ImageEstimate e;
+    double n = double(w) * h;
+    for (int y = y0; y < y0 + h; ++y)
+        for (int x = x0; x < x0 + w; ++x) {
+            // Channels share paths, so they are correlated: bound the variance of their average by the square
+            // of the mean standard deviation (exact for fully correlated channels).
+            double sd = 0;
+            for (int c = 0; c < 3; ++c) {
+                e.mean += r.image.pixel(x, y)[c] / (3 * n);
+                sd += std::sqrt(double(r.variance.pixel(x, y)[c])) / 3;
+            }
+            e.variance += sd * sd / (n * n);
+        }
+    return e;
+}
+
+// Two-sided critical z for significance alpha split Sidak-style over `tests` tests.
+inline double sidakZ(double alpha, int tests) {
+    double a = 1 - std::pow(1 - alpha, 1.0 / tests);
+    return boost::math::quantile(boost::math::complement(boost::math::normal(), a / 2));
+}
+
+} // namespace stipple::render::test
