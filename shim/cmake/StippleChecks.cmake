@@ -19,6 +19,15 @@ add_test(NAME shim.exports
           ${CMAKE_CURRENT_SOURCE_DIR}/include/stipple/stipple.h)
 set_tests_properties(shim.exports PROPERTIES LABELS unit)
 
+# cmake --install of the stipple component, then find_package and pkg-config consumers build and run against it.
+# Not under sanitizers: the consumer is built without them.
+if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+  add_test(NAME shim.install
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-install.sh ${CMAKE_BINARY_DIR}
+            ${CMAKE_CURRENT_SOURCE_DIR}/tests/install_consumer ${CMAKE_C_COMPILER})
+  set_tests_properties(shim.install PROPERTIES LABELS unit)
+endif()
+
 # abidiff against the committed baseline; fails on an incompatible change.
 find_program(STIPPLE_ABIDIFF abidiff)
 if(STIPPLE_ABIDIFF)

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the shim component of a build tree into a temporary prefix and checks what a host gets: the header,
+# libstipple.so.1 (SONAME link) and libstipple.so, a CMake package a consumer project can find_package and link,
+# and a pkg-config file that compiles and links the same consumer.
+#   usage: check-install.sh <build dir> <consumer source dir> <C compiler>
+set -euo pipefail
+build="$1" consumer="$2" cc="$3"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --component stipple --prefix "$work/prefix" > "$work/install.log"
+for f in include/stipple/stipple.h lib/libstipple.so.1 lib/libstipple.so lib/cmake/stipple/stippleConfig.cmake \
+         lib/pkgconfig/stipple.pc; do
+  [ -e "$work/prefix/$f" ] || { echo "FAIL: $f not installed"; cat "$work/install.log"; exit 1; }
+done
+echo "installed: $(cd "$work/prefix" && find . -type f -o -type l | sort | tr '\n' ' ')"
+cmake -S "$consumer" -B "$work/consumer" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_C_COMPILER="$cc" \
+      > "$work/configure.log" || { cat "$work/configure.log"; exit 1; }
+cmake --build "$work/consumer" > "$work/build.log" || { cat "$work/build.log"; exit 1; }
+LD_LIBRARY_PATH="$work/prefix/lib" "$work/consumer/consumer"
+export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
+echo "pkg-config: $(pkg-config --modversion stipple) $(pkg-config --cflags --libs stipple)"
+# shellcheck disable=SC2046
+"$cc" -std=c99 -o "$work/consumer-pc" "$consumer/consumer.c" $(pkg-config --cflags --libs stipple)
+LD_LIBRARY_PATH="$work/prefix/lib" "$work/consumer-pc"
+echo "check-install: ok"
