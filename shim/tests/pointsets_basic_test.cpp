@@ -91,9 +91,14 @@ BOOST_AUTO_TEST_CASE(invalid_input_returns_empty) {
     BOOST_CHECK(generatePoisson(2, 0, 1).empty());
     BOOST_CHECK(generatePoissonSeed(-1, 16, 1).empty());
     BOOST_CHECK(generatePoissonSeed(2, 0, 1).empty());
+    BOOST_CHECK(generatePoisson(2, kMaxPoints + 1, 1).empty());
+    BOOST_CHECK(generatePoissonSeed(3, 0xffffffffu, 1).empty());
     BOOST_CHECK_EQUAL(relativeRadius(2, nullptr, 16), 0.0);
     BOOST_CHECK_EQUAL(relativeRadius(5, nullptr, 0), 0.0);
     BOOST_CHECK_EQUAL(meanNearestNeighbourRadius(2, nullptr, 3), 0.0);
+    // Out-of-range and non-finite coordinates are measured (torus wrap), never indexed out of bounds.
+    const float odd[] = {-3.5f, 7.25f, std::numeric_limits<float>::quiet_NaN(), 0.5f, 1.0f, -0.0f, 2.0f, 0.25f};
+    for (int dim = 1; dim <= 2; ++dim) BOOST_CHECK_NO_THROW(relativeRadius(dim, odd, 8 / dim));
 }
 
 BOOST_AUTO_TEST_CASE(wrapping_never_yields_one) {

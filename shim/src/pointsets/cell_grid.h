@@ -18,9 +18,11 @@ struct CellGrid {
     std::vector<float> sorted;        // D floats per slot, in cell order
     std::vector<uint32_t> cellOfPoint, fill;  // scratch, kept to avoid reallocating on every rebuild
 
+    // Robust to any input (relativeRadius takes caller data): NaN and negatives go to cell 0, >= 1 to the last.
     static int cellOf(float x, int g) {
-        int c = int(x * float(g));
-        return c < g ? c : g - 1;
+        float s = x * float(g);
+        if (!(s >= 0.0f)) return 0;
+        return s < float(g) ? int(s) : g - 1;
     }
     uint32_t cellIndex(const int *c) const {
         uint32_t index = 0;

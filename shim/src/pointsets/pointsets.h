@@ -9,6 +9,10 @@
 
 namespace stipple::pointsets {
 
+// Largest n served (the C ABI's STIPPLE_MAX_SET_SIZE). Larger n, like dim outside 1..3 or n = 0, is invalid
+// input: the generators return an empty vector rather than attempt gigabytes of grid.
+inline constexpr uint32_t kMaxPoints = 1u << 22;
+
 // Exactly n points in [0,1)^dim (dim 1..3), interleaved, toroidal domain. Deterministic in seed.
 // High quality: minimum-distance-targeted relaxation (see shim/POINTSETS.md). Spatially shuffled order.
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);

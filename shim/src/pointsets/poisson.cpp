@@ -114,7 +114,7 @@ std::vector<float> shiftedLattice1D(uint32_t n, uint64_t seed) {
 }  // namespace
 
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed) {
-    if (n == 0 || dim < 1 || dim > 3) return {};
+    if (n == 0 || n > kMaxPoints || dim < 1 || dim > 3) return {};
     uint64_t stream = deriveSeed(seed, 0x9015500u + uint64_t(dim));
     if (dim == 1) return shiftedLattice1D(n, stream);
     Tuning tuning = tuningFor(dim);

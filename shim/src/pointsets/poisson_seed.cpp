@@ -81,7 +81,7 @@ std::vector<float> dartThrowingTree(uint32_t n, SplitMix64 &rng) {
 }  // namespace
 
 std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed) {
-    if (n == 0 || dim < 1 || dim > 3) return {};
+    if (n == 0 || n > kMaxPoints || dim < 1 || dim > 3) return {};
     SplitMix64 rng(deriveSeed(seed, 0x5eed0000u + uint64_t(dim)));
     switch (dim) {
         case 1: return dartThrowing1D(n, rng);

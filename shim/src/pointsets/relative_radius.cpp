@@ -76,13 +76,13 @@ std::vector<double> nearestNeighbourDistances(int dim, const float *points, uint
 double maxPackingDistance(int dim, uint32_t n) { return packingDistance(dim, n); }
 
 double relativeRadius(int dim, const float *points, uint32_t n) {
-    if (n == 0 || points == nullptr || dim < 1 || dim > 3) return 0.0;
+    if (n == 0 || n > kMaxPoints || points == nullptr || dim < 1 || dim > 3) return 0.0;
     std::vector<double> nearest = nearestNeighbourDistances(dim, points, n);
     return *std::min_element(nearest.begin(), nearest.end()) / packingDistance(dim, n);
 }
 
 double meanNearestNeighbourRadius(int dim, const float *points, uint32_t n) {
-    if (n == 0 || points == nullptr || dim < 1 || dim > 3) return 0.0;
+    if (n == 0 || n > kMaxPoints || points == nullptr || dim < 1 || dim > 3) return 0.0;
     std::vector<double> nearest = nearestNeighbourDistances(dim, points, n);
     double sum = 0.0;
     for (double d : nearest) sum += d;
