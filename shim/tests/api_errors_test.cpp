@@ -1,4 +1,4 @@
-// ctest-labels: unit
+// ctest-labels: unit;parallel
 // stipple-link: shared
 // api_errors_test.cpp — every error path of the C ABI returns the right status and a message naming the
 // argument; nothing crashes. Runs against libstipple.so itself, as hosts see it.
