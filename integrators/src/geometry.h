@@ -94,7 +94,7 @@ struct Ray {
 
 // Scale-aware offset of a ray origin off a surface: geometry may sit far from the origin (1e5 units), where a
 // fixed epsilon would be below one float ulp of the coordinates.
-inline float surfaceEpsilon(const Vec3& p) { return 1e-5f * std::max(1.0f, maxAbsComponent(p)); }
+inline float surfaceEpsilon(const Vec3& p) { return 1e-6f * std::max(1.0f, maxAbsComponent(p)); }
 inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& ng, const Vec3& w) {
     float eps = surfaceEpsilon(p);
     return dot(w, ng) >= 0 ? p + ng * eps : p - ng * eps;

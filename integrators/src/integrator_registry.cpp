@@ -6,7 +6,7 @@ namespace stipple::render {
 
 std::string knownIntegrators() {
 #ifdef STIPPLE_HAVE_BDPT
-    return "path, direct, direct-light, direct-bsdf, bdpt";
+    return "path, direct, direct-light, direct-bsdf, bdpt (debug: bdpt:s=S,t=T[,mis], bdpt:depth=D)";
 #else
     return "path, direct, direct-light, direct-bsdf";
 #endif
@@ -20,7 +20,7 @@ std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const Render
     if (name == "direct-light") return makeDirectIntegrator(scene, settings, DirectStrategy::LightOnly);
     if (name == "direct-bsdf") return makeDirectIntegrator(scene, settings, DirectStrategy::BsdfOnly);
 #ifdef STIPPLE_HAVE_BDPT
-    if (name == "bdpt") return makeBdptIntegrator(scene, camera, settings);
+    if (name == "bdpt" || name.rfind("bdpt:", 0) == 0) return makeBdptIntegrator(scene, camera, settings, name);
 #endif
     throw std::invalid_argument("unknown integrator '" + name + "'; expected one of " + knownIntegrators());
 }

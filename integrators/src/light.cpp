@@ -69,6 +69,14 @@ void Light::samplePoint(Point2 u, Vec3& p, Vec3& n) const {
     }
 }
 
+// The cone of directions is only defined from outside the sphere. A point on (or numerically near) the surface,
+// such as a hit on the inside of an emissive sphere far from the origin, uses area sampling, which is valid
+// from anywhere; the slack covers float error of points computed on the surface.
+bool Light::seesSphereAsCone(const Vec3& ref) const {
+    float outer = radius_ * 1.001f + 4 * surfaceEpsilon(center_);
+    return lengthSquared(ref - center_) > outer * outer;
+}
+
 float Light::sphereConePdf(const Vec3& ref) const {
     float dc2 = lengthSquared(center_ - ref);
     float sin2ThetaMax = radius_ * radius_ / dc2;
@@ -79,7 +87,7 @@ float Light::sphereConePdf(const Vec3& ref) const {
 
 bool Light::sampleLi(const Vec3& ref, Point2 u, LightLiSample& out) const {
     Vec3 p, n;
-    if (kind_ == Kind::Sphere && lengthSquared(ref - center_) > radius_ * radius_ * 1.00001f) {
+    if (kind_ == Kind::Sphere && seesSphereAsCone(ref)) {
         // Sample the cone of directions the sphere subtends (pbrt-v4), robust for tiny radii.
         float dc = length(center_ - ref);
         float sin2ThetaMax = radius_ * radius_ / (dc * dc);
@@ -116,7 +124,7 @@ bool Light::sampleLi(const Vec3& ref, Point2 u, LightLiSample& out) const {
 }
 
 float Light::pdfLi(const Vec3& ref, const Vec3& p, const Vec3& n) const {
-    if (kind_ == Kind::Sphere && lengthSquared(ref - center_) > radius_ * radius_ * 1.00001f) return sphereConePdf(ref);
+    if (kind_ == Kind::Sphere && seesSphereAsCone(ref)) return sphereConePdf(ref);
     return toSolidAngle(1 / area_, ref, p, n);
 }
 

@@ -59,6 +59,7 @@ public:
 private:
     void samplePoint(Point2 u, Vec3& p, Vec3& n) const; // uniform by area
     float sphereConePdf(const Vec3& ref) const;
+    bool seesSphereAsCone(const Vec3& ref) const;
 
     Kind kind_ = Kind::Mesh;
     Spectrum L_;

@@ -3,7 +3,7 @@
 //    pattern, path tracer;
 //  - a square light over a diffuse plane -> the closed-form radiance albedo * L * F, direct integrator.
 // Pass when |mean - expected| <= z * sigma + bias, where sigma bounds the standard deviation of the image mean
-// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 6
+// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 9
 // renders here, and bias is the stated deterministic allowance (0 for the sphere; 0.3% for the plane, whose
 // pixels see a patch 0.06 wide over which the exact radiance varies by less than 0.1%).
 #define BOOST_TEST_MODULE analytic_render
@@ -15,7 +15,7 @@ using namespace stipple::render;
 using namespace stipple::render::test;
 
 namespace {
-constexpr int kTests = 6;
+constexpr int kTests = 9;
 } // namespace
 
 BOOST_AUTO_TEST_CASE(furnace_sphere_is_one_for_every_pattern) {
@@ -45,6 +45,40 @@ BOOST_AUTO_TEST_CASE(furnace_sphere_truncated_depth_matches_geometric_sum) {
     ImageEstimate e = estimate(r);
     double sigma = std::sqrt(e.variance);
     BOOST_TEST(std::abs(e.mean - 0.875) <= sidakZ(0.01, kTests) * sigma, "mean " << e.mean << " sigma " << sigma);
+}
+
+namespace {
+double squareLightExpected() {
+    auto F = [](double X, double Y) { // corner form factor of a parallel rectangle (X, Y in units of height)
+        double a = std::sqrt(1 + X * X), b = std::sqrt(1 + Y * Y);
+        return (X / a * std::atan(Y / a) + Y / b * std::atan(X / b)) / (2 * M_PI);
+    };
+    return 0.5 * 3.0 * 4 * F(0.5, 0.5);
+}
+
+void checkMean(const std::string& file, double expected, double relativeBias, uint64_t seed) {
+    auto scene = Scene::load(scenePath(file));
+    RenderOptions o;
+    o.pattern = "independent";
+    o.seed = seed;
+    RenderResult r = scene->render(o);
+    ImageEstimate e = estimate(r);
+    double tol = sidakZ(0.01, kTests) * std::sqrt(e.variance) + relativeBias * expected;
+    BOOST_TEST_MESSAGE(file << ": mean " << e.mean << " expected " << expected << " +- " << tol);
+    BOOST_TEST(r.nonFiniteSamples == 0u);
+    BOOST_TEST(std::abs(e.mean - expected) <= tol, file << ": mean " << e.mean << ", expected " << expected << " +- " << tol);
+}
+} // namespace
+
+BOOST_AUTO_TEST_CASE(far_from_origin_square_light_and_furnace) {
+    // 1e5 units from the origin (float spacing 0.008 there): offsets must scale, nothing may leak.
+    checkMean("quad-light-plane-far.yaml", squareLightExpected(), 0.003, 21);
+    checkMean("furnace-sphere-far.yaml", 1.0, 0.0, 22);
+}
+
+BOOST_AUTO_TEST_CASE(tiny_sphere_light_cone_sampling) {
+    // r = 1e-4, L = 1e8: radiance 0.5 below it; 0.3% allowance for the patch the pixels see.
+    checkMean("tiny-sphere-light.yaml", 0.5, 0.003, 23);
 }
 
 BOOST_AUTO_TEST_CASE(square_light_over_plane_matches_form_factor) {
