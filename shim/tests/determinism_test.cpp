@@ -118,3 +118,14 @@ BOOST_AUTO_TEST_CASE(poisson_cache_fills_deterministically_under_contention) {
   for (size_t i = 0; i < first.size(); ++i) mismatches += first[i].empty() || !bitwiseEqual(first[i], second[i]);
   BOOST_CHECK_EQUAL(mismatches, 0u);
 }
+
+BOOST_AUTO_TEST_CASE(appending_dimensions_changes_nothing_before_them) {
+  // A host that declares more dimensions later (e.g. a deeper path) keeps the values of the ones it had.
+  for (uint32_t pattern : kAllPatterns) {
+    auto shorter = makeSampler(pattern, 9, 77, {{2, 1}, {1, 3}});
+    auto longer = makeSampler(pattern, 9, 77, {{2, 1}, {1, 3}, {3, 2}, {2, 1}});
+    for (uint32_t d = 0; d < 2; ++d)
+      BOOST_CHECK_MESSAGE(bitwiseEqual(fillPixel(shorter.get(), 4, 4, d), fillPixel(longer.get(), 4, 4, d)),
+                          patternName(pattern) << " dimension " << d);
+  }
+}
