@@ -106,6 +106,15 @@ BOOST_AUTO_TEST_CASE(layout) {
         BOOST_TEST(has(names, "b7."));            // max depth 8: bounces 0..7
         BOOST_TEST(!has(names, "b8."));
     }
+    // BDPT scenes: camera and light subpaths as deep as the scene's max depth, and no deeper
+    for (auto [scene, depth] : {std::pair{"veach-bidir", 7}, std::pair{"italian-city", 5}}) {
+        BOOST_TEST_CONTEXT(scene) {
+            auto names = layoutNames(*Scene::load(scenePath(scene)), o);
+            BOOST_TEST(has(names, "cam.b" + std::to_string(depth - 1) + "."));
+            BOOST_TEST(!has(names, "cam.b" + std::to_string(depth) + "."));
+            BOOST_TEST(has(names, "light.pos"));
+        }
+    }
 }
 
 BOOST_AUTO_TEST_CASE(cornell_box) { tinyRender("cornell-box", 32, 32, 0.05, 5.0); }
