@@ -190,6 +190,7 @@ int main(int argc, char** argv) {
                   : shard ? "Shard " + std::to_string(args.shardIndex) + "/" + std::to_string(args.shardCount) +
                                 " only: checks are evaluated by --merge."
                           : "";
+        for (const auto& e : results.errors) in.note += " ERROR, scene skipped: " + e + ".";
         BaselineComparison baseline;
         if (!args.baseline.empty()) {
             Results base = readResultsJson(args.baseline);
@@ -226,6 +227,8 @@ int main(int argc, char** argv) {
         std::printf("\n%zu checks, %zu failed%s; %.1f s\nreport: %s\n", in.outcomes.size(), failures,
                     in.baseline ? (baseline.failed ? ", baseline failed" : ", baseline passed") : "", wall,
                     (fs::path(args.out) / "index.html").string().c_str());
+        for (const auto& e : results.errors) std::cerr << "stipple-validate: scene skipped: " << e << "\n";
+        if (!results.errors.empty()) return kExitError;
         return failed ? kExitChecksFailed : 0;
     } catch (const std::exception& e) {
         std::cerr << "stipple-validate: " << e.what() << "\n";

@@ -9,7 +9,7 @@ Progress::Progress(size_t total) : total_(total), tty_(isatty(STDERR_FILENO)), s
 
 std::string Progress::eta() const {
     if (done_ == 0) return "?";
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_ - paused_).count();
     double remaining = elapsed / double(done_) * double(total_ - done_);
     char buf[32];
     std::snprintf(buf, sizeof buf, "%dm%02ds", int(remaining) / 60, int(remaining) % 60);
@@ -37,6 +37,18 @@ void Progress::note(const std::string& message) {
     std::fprintf(stderr, "%s\n", message.c_str());
     barShown_ = false;
     std::fflush(stderr);
+}
+
+void Progress::pause() {
+    if (isPaused_) return;
+    isPaused_ = true;
+    pausedAt_ = std::chrono::steady_clock::now();
+}
+
+void Progress::resume() {
+    if (!isPaused_) return;
+    isPaused_ = false;
+    paused_ += std::chrono::steady_clock::now() - pausedAt_;
 }
 
 void Progress::finish() {

@@ -15,13 +15,18 @@ public:
     // A message that is not a cell (reference renders, scene loads): its own line in both modes.
     void note(const std::string& message);
     void finish();
+    // Time between pause() and resume() (reference renders, scene loads) is left out of the ETA.
+    void pause();
+    void resume();
 
 private:
     std::string eta() const;
     size_t total_, done_ = 0;
     bool tty_;
     bool barShown_ = false;
-    std::chrono::steady_clock::time_point start_;
+    std::chrono::steady_clock::time_point start_, pausedAt_;
+    std::chrono::steady_clock::duration paused_{};
+    bool isPaused_ = false;
 };
 
 } // namespace stipple::validation

@@ -66,102 +66,114 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             if (g.scene == si) mine.push_back(g);
         if (mine.empty()) continue;
 
-        progress.note("loading " + ms.path);
-        std::unique_ptr<render::Scene> scene;
+        // A scene that fails does not take the others down: its error is recorded, its rows dropped, and the
+        // run ends with a non-zero status after writing the report of the rest.
         try {
-            scene = render::Scene::load(ms.path);
-        } catch (const std::exception& e) {
-            throw std::runtime_error(ms.path + ": cannot load scene (matrix " + m.path + "): " + e.what());
-        }
-        render::RenderOptions base;
-        base.width = ms.width ? ms.width : scene->defaultWidth();
-        base.height = ms.height ? ms.height : scene->defaultHeight();
-        base.integrator = ms.integrator.empty() ? scene->defaultIntegrator() : ms.integrator;
-        base.maxDepth = ms.maxDepth;
-        base.threads = threads;
+            progress.pause();
+            progress.note("loading " + ms.path);
+            std::unique_ptr<render::Scene> scene;
+            try {
+                scene = render::Scene::load(ms.path);
+            } catch (const std::exception& e) {
+                throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + e.what());
+            }
+            render::RenderOptions base;
+            base.width = ms.width ? ms.width : scene->defaultWidth();
+            base.height = ms.height ? ms.height : scene->defaultHeight();
+            base.integrator = ms.integrator.empty() ? scene->defaultIntegrator() : ms.integrator;
+            base.maxDepth = ms.maxDepth;
+            base.threads = threads;
 
-        SceneInfo info;
-        info.name = ms.name;
-        info.file = ms.file;
-        info.contentHash = scene->contentHash();
-        info.integrator = base.integrator;
-        info.width = base.width;
-        info.height = base.height;
-        info.triangles = scene->triangleCount();
-        info.loadSeconds = scene->loadSeconds();
-        info.buildSeconds = scene->buildSeconds();
+            SceneInfo info;
+            info.name = ms.name;
+            info.file = ms.file;
+            info.contentHash = scene->contentHash();
+            info.integrator = base.integrator;
+            info.width = base.width;
+            info.height = base.height;
+            info.triangles = scene->triangleCount();
+            info.loadSeconds = scene->loadSeconds();
+            info.buildSeconds = scene->buildSeconds();
 
-        render::RenderOptions refOptions = base;
-        refOptions.pattern = m.reference.pattern;
-        refOptions.spp = m.reference.spp;
-        refOptions.seed = m.reference.seed;
-        progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d (key %s)", ms.name.c_str(),
-                          refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
-                          base.width, base.height, referenceKey(*scene, refOptions).c_str()));
-        Reference ref = loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir);
-        info.referenceKey = ref.key;
-        info.referenceSpp = refOptions.spp;
-        info.referenceSeconds = ref.renderSeconds;
-        info.noiseFloor = noiseFloor(ref.variance);
-        progress.note(fmt("  %s: %s, noise floor %.4g (MSE)", ref.fromCache ? "cached" : "rendered",
-                          ref.fromCache ? ref.imagePath.c_str() : fmt("%.1f s", ref.renderSeconds).c_str(),
-                          info.noiseFloor));
-        if (opt.referencesOnly) {
+            render::RenderOptions refOptions = base;
+            refOptions.pattern = m.reference.pattern;
+            refOptions.spp = m.reference.spp;
+            refOptions.seed = m.reference.seed;
+            progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d (key %s)", ms.name.c_str(),
+                              refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
+                              base.width, base.height, referenceKey(*scene, refOptions).c_str()));
+            Reference ref = loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir);
+            info.referenceKey = ref.key;
+            info.referenceSpp = refOptions.spp;
+            info.referenceSeconds = ref.renderSeconds;
+            info.noiseFloor = noiseFloor(ref.variance);
+            progress.note(fmt("  %s: %s, noise floor %.4g (MSE)", ref.fromCache ? "cached" : "rendered",
+                              ref.fromCache ? ref.imagePath.c_str() : fmt("%.1f s", ref.renderSeconds).c_str(),
+                              info.noiseFloor));
+            progress.resume();
+            if (opt.referencesOnly) {
+                results.scenes.push_back(info);
+                continue;
+            }
+            writeCrop(opt.reportDir, ms.name, "reference", ref.image, m.crop);
+
+            // Untimed warm-up: a tiny render per pattern × spp fills whatever the sampler caches per N, so the
+            // timed cells measure steady state. Its cost is reported per scene.
+            auto warm = Clock::now();
+            for (uint32_t spp : m.spp)
+                for (const auto& pattern : m.patterns) {
+                    render::RenderOptions o = base;
+                    o.pattern = pattern;
+                    o.spp = spp;
+                    o.seed = 0x5eed;
+                    o.width = std::min(base.width, 8);
+                    o.height = std::min(base.height, 8);
+                    scene->render(o);
+                }
+            info.warmupSeconds = std::chrono::duration<double>(Clock::now() - warm).count();
+
+            for (size_t gi = 0; gi < mine.size(); ++gi) {
+                const CellGroup& g = mine[gi];
+                for (size_t k = 0; k < m.patterns.size(); ++k) {
+                    // Rotate the pattern order per group: no pattern always runs first (cold caches) or last.
+                    const std::string& pattern = m.patterns[(k + gi) % m.patterns.size()];
+                    render::RenderOptions o = base;
+                    o.pattern = pattern;
+                    o.spp = g.spp;
+                    o.seed = g.seed;
+                    render::RenderResult r = scene->render(o);
+                    ImageError e = compareImages(ref.image, r.image);
+                    ResultRow row;
+                    row.scene = ms.name;
+                    row.pattern = pattern;
+                    row.spp = g.spp;
+                    row.seed = g.seed;
+                    row.width = r.image.width;
+                    row.height = r.image.height;
+                    row.mse = e.mse;
+                    row.rms = e.rms;
+                    row.mseCorrected = correctedMse(e.mse, info.noiseFloor);
+                    row.rmsCorrected = std::sqrt(row.mseCorrected);
+                    row.floorLimited = floorLimited(row.mseCorrected, info.noiseFloor);
+                    row.nonFinitePixels = e.nonFinitePixels;
+                    row.nonFiniteSamples = r.nonFiniteSamples;
+                    row.renderSeconds = r.renderSeconds;
+                    row.samplerSeconds = r.samplerSeconds;
+                    results.rows.push_back(row);
+                    if (g.spp == cropSpp && g.seed == m.seeds.front()) writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
+                    progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
+                                      pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
+                                      row.renderSeconds, row.samplerSeconds, row.floorLimited ? ", floor-limited" : ""));
+                }
+            }
             results.scenes.push_back(info);
-            continue;
+        } catch (const std::exception& e) {
+            progress.resume();
+            std::string what = ms.path + ": " + e.what();
+            progress.note("ERROR: " + what + " (skipping scene " + ms.name + ")");
+            results.errors.push_back(what);
+            std::erase_if(results.rows, [&](const ResultRow& r) { return r.scene == ms.name; });
         }
-        writeCrop(opt.reportDir, ms.name, "reference", ref.image, m.crop);
-
-        // Untimed warm-up: a tiny render per pattern × spp fills whatever the sampler caches per N, so the
-        // timed cells measure steady state. Its cost is reported per scene.
-        auto warm = Clock::now();
-        for (uint32_t spp : m.spp)
-            for (const auto& pattern : m.patterns) {
-                render::RenderOptions o = base;
-                o.pattern = pattern;
-                o.spp = spp;
-                o.seed = 0x5eed;
-                o.width = std::min(base.width, 8);
-                o.height = std::min(base.height, 8);
-                scene->render(o);
-            }
-        info.warmupSeconds = std::chrono::duration<double>(Clock::now() - warm).count();
-
-        for (size_t gi = 0; gi < mine.size(); ++gi) {
-            const CellGroup& g = mine[gi];
-            for (size_t k = 0; k < m.patterns.size(); ++k) {
-                // Rotate the pattern order per group: no pattern always runs first (cold caches) or last.
-                const std::string& pattern = m.patterns[(k + gi) % m.patterns.size()];
-                render::RenderOptions o = base;
-                o.pattern = pattern;
-                o.spp = g.spp;
-                o.seed = g.seed;
-                render::RenderResult r = scene->render(o);
-                ImageError e = compareImages(ref.image, r.image);
-                ResultRow row;
-                row.scene = ms.name;
-                row.pattern = pattern;
-                row.spp = g.spp;
-                row.seed = g.seed;
-                row.width = r.image.width;
-                row.height = r.image.height;
-                row.mse = e.mse;
-                row.rms = e.rms;
-                row.mseCorrected = correctedMse(e.mse, info.noiseFloor);
-                row.rmsCorrected = std::sqrt(row.mseCorrected);
-                row.floorLimited = floorLimited(row.mseCorrected, info.noiseFloor);
-                row.nonFinitePixels = e.nonFinitePixels;
-                row.nonFiniteSamples = r.nonFiniteSamples;
-                row.renderSeconds = r.renderSeconds;
-                row.samplerSeconds = r.samplerSeconds;
-                results.rows.push_back(row);
-                if (g.spp == cropSpp && g.seed == m.seeds.front()) writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
-                progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
-                                  pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
-                                  row.renderSeconds, row.samplerSeconds, row.floorLimited ? ", floor-limited" : ""));
-            }
-        }
-        results.scenes.push_back(info);
     }
     progress.finish();
     sortRows(results.rows, m);
