@@ -36,14 +36,15 @@ struct TorusMap {
     }
   }
 
-  // x + s or s - x, wrapped into [0,1). A sum that rounds up to 1.0 is the torus point 0.
+  // s + x or s - x, wrapped into [0,1) without branches (the wrap is a coin flip per value: a branch would be
+  // mispredicted half the time). s - x in (-1, 1) plus 1 may round up to 1.0, which the second step maps to 0;
+  // s + x in [1, 2) minus 1 is exact.
   void apply(const float* stored, uint32_t arity, float* out) const {
     for (uint32_t c = 0; c < arity; ++c) {
       const float x = stored[source[c]];
-      float v = reflect[c] ? shift[c] - x : x + shift[c];
-      if (v < 0.0f) v += 1.0f;
-      if (v >= 1.0f) v -= 1.0f;
-      if (v >= 1.0f || v < 0.0f) v = 0.0f;
+      float v = shift[c] + (reflect[c] ? -x : x);
+      v += float(v < 0.0f);
+      v -= float(v >= 1.0f);
       out[c] = v;
     }
   }
