@@ -51,9 +51,4 @@ constexpr float unitFloat(uint64_t bits) {
   return static_cast<float>(bits >> 40) * 0x1p-24f;
 }
 
-// A double in [0, 1) with 53 random bits, for jitter that is later rounded into a stratum.
-constexpr double unitDouble(uint64_t bits) {
-  return static_cast<double>(bits >> 11) * 0x1p-53;
-}
-
 }  // namespace stipple
