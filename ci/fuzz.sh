@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Fuzzing CI (issue 7): build the three libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each
+# for a bounded time over its seed corpus and its regressions. Exit status 1 when any harness finds a crash,
+# a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/ and the command
+# to replay it is printed. Fix the bug, then add the file to <part>/fuzz/regressions/ (replayed by CTest).
+#
+# Environment (all optional):
+#   STIPPLE_FUZZ_DIR      build directory (default: the fuzz preset's build/fuzz)
+#   STIPPLE_FUZZ_SECONDS  seconds per harness (default 20; a longer local run: 600 or more)
+#   STIPPLE_JOBS          parallel build jobs (default 2)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+seconds=${STIPPLE_FUZZ_SECONDS:-20}
+jobs=${STIPPLE_JOBS:-2}
+dir=${STIPPLE_FUZZ_DIR:-build/fuzz}
+start=$SECONDS
+
+args=(--preset fuzz)
+[[ -n "${STIPPLE_FUZZ_DIR:-}" ]] && args+=(-B "$dir")
+# The scenes part (city generator) has nothing to fuzz here.
+cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
+cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer
+
+# harness name, part folder
+harnesses=("stipple_api_fuzzer shim" "scene_fuzzer integrators" "matrix_fuzzer validation")
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+status=0
+for entry in "${harnesses[@]}"; do
+    read -r name part <<<"$entry"
+    out="$dir/fuzz-out/$name"
+    rm -rf "$out"
+    mkdir -p "$out/corpus"  # new inputs go here, never into the repository
+    log="$out/log.txt"
+    echo "fuzz.sh: $name for ${seconds}s"
+    if "$dir/bin/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
+        -print_final_stats=1 -artifact_prefix="$out/" \
+        "$out/corpus" "$root/$part/fuzz/corpus" "$root/$part/fuzz/regressions" >"$log" 2>&1; then
+        execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+        echo "fuzz.sh: $name ok: ${execs:-?} executions, $(ls "$out/corpus" | wc -l) new corpus inputs"
+    else
+        status=1
+        echo "fuzz.sh: $name FAILED; last lines of $log:"
+        tail -40 "$log"
+        for artifact in "$out"/crash-* "$out"/leak-* "$out"/timeout-* "$out"/oom-*; do
+            [[ -e "$artifact" ]] && echo "fuzz.sh: reproduce with: $dir/bin/$name $artifact"
+        done
+    fi
+done
+echo "fuzz.sh: $((SECONDS - start)) s, status $status"
+exit $status

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Sanitizer CI (issue 7): build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
+# label `slow`; build the tsan preset and run label `parallel` (tests that exercise several threads).
+# Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
+#
+# Environment (all optional):
+#   STIPPLE_ASAN_DIR, STIPPLE_TSAN_DIR  build directories (default: the presets' build/asan, build/tsan)
+#   STIPPLE_JOBS                        parallel build and test jobs (default 2)
+#   STIPPLE_SANITIZERS                  "asan tsan" (default), or one of them
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=${STIPPLE_JOBS:-2}
+which=${STIPPLE_SANITIZERS:-asan tsan}
+export BOOST_TEST_COLOR_OUTPUT=no
+supp="$PWD/ci/sanitizers.supp"
+
+configure_and_build() { # preset, build dir
+    local args=(--preset "$1")
+    [[ -n "$2" ]] && args+=(-B "$2")
+    # The city generator's scenes are not needed to find memory or thread errors; keep the build small.
+    cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
+    cmake --build "${2:-build/$1}" -j "$jobs"
+}
+
+status=0
+start=$SECONDS
+if [[ " $which " == *" asan "* ]]; then
+    dir=${STIPPLE_ASAN_DIR:-build/asan}
+    configure_and_build asan "${STIPPLE_ASAN_DIR:-}"
+    # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
+    # third-party libraries (see ci/sanitizers.supp).
+    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+    export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    ctest --test-dir "$dir" -LE slow -j "$jobs" --output-on-failure --timeout 900 || status=1
+    unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
+    echo "sanitizers.sh: asan done after $((SECONDS - start)) s"
+fi
+if [[ " $which " == *" tsan "* ]]; then
+    dir=${STIPPLE_TSAN_DIR:-build/tsan}
+    configure_and_build tsan "${STIPPLE_TSAN_DIR:-}"
+    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
+    ctest --test-dir "$dir" -L parallel -j 1 --output-on-failure --timeout 900 || status=1
+    unset TSAN_OPTIONS
+    echo "sanitizers.sh: tsan done after $((SECONDS - start)) s"
+fi
+echo "sanitizers.sh: $((SECONDS - start)) s, status $status"
+exit $status
