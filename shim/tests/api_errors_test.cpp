@@ -242,3 +242,20 @@ BOOST_AUTO_TEST_CASE(messages_are_per_thread_and_survive_success) {
   std::thread([&] { other = stipple_last_error_message(); }).join();
   BOOST_CHECK_EQUAL(other, "");
 }
+
+BOOST_AUTO_TEST_CASE(larger_output_structs_are_zeroed_past_what_we_know) {
+  auto s = makeSampler(STIPPLE_PATTERN_STRATIFIED, 16, 3, {{2, 1, "lens"}});
+  struct BiggerInfo {
+    stipple_dimension_info info;
+    uint64_t future;
+  } big;
+  std::memset(&big, 0xab, sizeof big);
+  big.info.struct_size = sizeof big;
+  BOOST_REQUIRE_EQUAL(stipple_sampler_get_dimension_info(s.get(), 0, &big.info), STIPPLE_OK);
+  BOOST_CHECK_EQUAL(big.info.struct_size, sizeof big);
+  BOOST_CHECK_EQUAL(big.info.floats_per_pixel, 32u);
+  BOOST_CHECK_EQUAL(big.info.strata[0] * big.info.strata[1], 16u);
+  BOOST_CHECK_EQUAL(big.info.strata[2], 0u);
+  BOOST_CHECK_EQUAL(big.info.reserved, 0u);
+  BOOST_CHECK_EQUAL(big.future, 0u);
+}
