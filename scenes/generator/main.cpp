@@ -2,6 +2,7 @@
 //   stipple-citygen [--seed N] [--out DIR] [--name NAME]
 #include "town.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -28,8 +29,10 @@ int main(int argc, char** argv) {
         const char* v = argv[++i];
         if (a == "--seed") {
             char* end = nullptr;
+            errno = 0;
             seed = std::strtoull(v, &end, 10);
-            if (!*v || *end) return usage("--seed expects a non-negative integer, got", v);
+            if (!*v || *end || *v == '-' || *v == '+' || errno == ERANGE)
+                return usage("--seed expects an integer in [0, 2^64), got", v);
         } else if (a == "--out") {
             out = v;
         } else if (a == "--name") {

@@ -63,4 +63,7 @@ BOOST_AUTO_TEST_CASE(bad_arguments_are_errors) {
     BOOST_TEST(std::system((gen + " --seed banana > /dev/null 2>&1").c_str()) != 0);
     BOOST_TEST(std::system((gen + " --frobnicate 1 > /dev/null 2>&1").c_str()) != 0);
     BOOST_TEST(std::system((gen + " --seed > /dev/null 2>&1").c_str()) != 0);
+    BOOST_TEST(std::system((gen + " --seed -3 > /dev/null 2>&1").c_str()) != 0);
+    BOOST_TEST(std::system((gen + " --seed 99999999999999999999999 > /dev/null 2>&1").c_str()) != 0);
+    BOOST_TEST(std::system((gen + " --name a/b > /dev/null 2>&1").c_str()) != 0);
 }
