@@ -1,0 +1,53 @@
+// BDPT and the path tracer estimate the same image: a diffuse Cornell box, a glossy scene (rough plastic and
+// rough conductor under a sphere light and a quad light, open to the sky) and a Cornell box with a glass and a
+// mirror sphere. Each image is cut into 8x8 blocks; per block, K = 8 renders of each integrator (different
+// seeds) are compared by Welch's t-test (Jung et al. 2020). Family-wise alpha = 0.01, Sidak-corrected over all
+// blocks of the three scenes.
+#define BOOST_TEST_MODULE bdpt_agreement
+#include <boost/test/unit_test.hpp>
+
+#include "bdpt_test_support.h"
+
+using namespace stipple::render;
+using namespace stipple::render::test;
+
+namespace {
+constexpr int kSize = 32, kBlock = 8, kRenders = 8;
+constexpr int kBlocks = (kSize / kBlock) * (kSize / kBlock);
+constexpr int kScenes = 3;
+
+void compare(const std::string& file, int maxDepth, uint64_t seed) {
+    auto scene = Scene::load(scenePath(file));
+    RenderOptions o;
+    o.pattern = "stratified";
+    o.maxDepth = maxDepth;
+    o.width = o.height = kSize;
+    o.spp = 16;
+    o.integrator = "bdpt";
+    SeedRenders bdpt = renderSeeds(*scene, o, kRenders, seed);
+    o.integrator = "path";
+    o.spp = 32;
+    SeedRenders path = renderSeeds(*scene, o, kRenders, seed + 1000);
+    for (const RenderResult& r : bdpt.renders) BOOST_TEST(r.nonFiniteSamples == 0u);
+    const double alpha = sidakAlpha(0.01, kScenes * kBlocks);
+    double minP = 1;
+    for (int by = 0; by < kSize / kBlock; ++by)
+        for (int bx = 0; bx < kSize / kBlock; ++bx) {
+            BlockEstimate a = blockEstimate(bdpt, bx * kBlock, by * kBlock, kBlock, kBlock);
+            BlockEstimate b = blockEstimate(path, bx * kBlock, by * kBlock, kBlock, kBlock);
+            double p = welchPValue(a, b);
+            minP = std::min(minP, p);
+            BOOST_TEST(p >= alpha, file << " block (" << bx << "," << by << "): bdpt " << a.mean << " +- "
+                                        << std::sqrt(a.varianceOfMean) << ", path " << b.mean << " +- "
+                                        << std::sqrt(b.varianceOfMean) << ", p = " << p << " < " << alpha);
+        }
+    BlockEstimate a = blockEstimate(bdpt, 0, 0, kSize, kSize), b = blockEstimate(path, 0, 0, kSize, kSize);
+    BOOST_TEST_MESSAGE(file << ": image mean bdpt " << a.mean << " +- " << std::sqrt(a.varianceOfMean) << ", path "
+                            << b.mean << " +- " << std::sqrt(b.varianceOfMean) << "; smallest block p " << minP);
+    BOOST_TEST(a.mean > 0.01);
+}
+} // namespace
+
+BOOST_AUTO_TEST_CASE(diffuse_cornell_box) { compare("cornell-box.yaml", 5, 10); }
+BOOST_AUTO_TEST_CASE(glossy_plates_two_lights) { compare("glossy-lights.yaml", 4, 20); }
+BOOST_AUTO_TEST_CASE(glass_and_mirror_spheres) { compare("bdpt-glass-box.yaml", 6, 30); }
