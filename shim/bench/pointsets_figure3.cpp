@@ -1,7 +1,7 @@
 // pointsets_figure3.cpp — the study's Figure 3 (generation time vs N per pattern, 1D/2D/3D), redone, plus the
 // quality tables and the isotropy figure of shim/POINTSETS.md. One command:
 //
-//     build/release/bin/shim_pointsets_figure3 -o report/figure3          (about 3-5 minutes on 2 cores)
+//     build/release/bin/shim_pointsets_figure3 -o report/figure3          (~2.5 min of CPU; more wall time on a loaded machine)
 //     build/release/bin/shim_pointsets_figure3 -o report/figure3 --quick  (reduced: ~20 s, for a smoke test)
 //
 // Writes into the output directory:
