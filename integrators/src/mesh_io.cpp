@@ -1,6 +1,8 @@
 #include "mesh_io.h"
 
 #include <cstring>
+#include <iterator>
+#include <string_view>
 #include <fstream>
 #include <sstream>
 
@@ -45,11 +47,14 @@ struct PlyElement {
     std::vector<PlyProperty> props;
 };
 
-// Reads one binary little-endian value (this code assumes a little-endian host, as every Debian amd64/arm64 is).
-bool readBinary(std::istream& in, PlyType t, double& v) {
-    unsigned char buf[8];
+// Reads one value at `cur` (binary little endian: this code assumes a little-endian host, as every Debian
+// amd64/arm64 is) and advances; false when the data ends.
+bool readBinary(const char*& cur, const char* end, PlyType t, double& v) {
     size_t n = plySize(t);
-    if (!in.read(reinterpret_cast<char*>(buf), std::streamsize(n))) return false;
+    if (size_t(end - cur) < n) return false;
+    unsigned char buf[8];
+    std::memcpy(buf, cur, n);
+    cur += n;
     switch (t) {
     case PlyType::Int8: { int8_t x; std::memcpy(&x, buf, 1); v = x; break; }
     case PlyType::UInt8: v = buf[0]; break;
@@ -64,12 +69,25 @@ bool readBinary(std::istream& in, PlyType t, double& v) {
     return true;
 }
 
-void addPolygon(TriangleMesh& mesh, const std::vector<long long>& idx, size_t vertexCount, const std::string& where) {
-    if (idx.size() < 3) throw MeshFileError(where + ": a face with " + std::to_string(idx.size()) +
+// Reads one ascii number at `cur` within a line ending at `end`.
+bool readAscii(const char*& cur, const char* end, double& v) {
+    while (cur < end && (*cur == ' ' || *cur == '\t' || *cur == '\r')) ++cur;
+    if (cur >= end) return false;
+    char* stop = nullptr;
+    v = std::strtod(cur, &stop);
+    if (stop == cur || stop > end) return false;
+    cur = stop;
+    return true;
+}
+
+// `where` is only called to build an error message.
+template <typename Where>
+void addPolygon(TriangleMesh& mesh, const std::vector<long long>& idx, size_t vertexCount, const Where& where) {
+    if (idx.size() < 3) throw MeshFileError(where() + ": a face with " + std::to_string(idx.size()) +
                                             " vertices; expected at least 3");
     for (long long i : idx)
         if (i < 0 || size_t(i) >= vertexCount)
-            throw MeshFileError(where + ": vertex index " + std::to_string(i) + " out of range [0, " +
+            throw MeshFileError(where() + ": vertex index " + std::to_string(i) + " out of range [0, " +
                                 std::to_string(vertexCount) + ")");
     for (size_t k = 1; k + 1 < idx.size(); ++k) // fan: exact for triangles and convex quads
         mesh.indices.insert(mesh.indices.end(), {uint32_t(idx[0]), uint32_t(idx[k]), uint32_t(idx[k + 1])});
@@ -134,6 +152,10 @@ TriangleMesh readPly(const std::string& path) {
         }
     }
 
+    // The body is read at once and parsed in memory (large binary PLY files load at disk speed).
+    std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const char* cur = data.data();
+    const char* const dataEnd = data.data() + data.size();
     TriangleMesh mesh;
     size_t vertexCount = 0;
     for (const PlyElement& e : elements)
@@ -153,35 +175,38 @@ TriangleMesh readPly(const std::string& path) {
             throw MeshFileError(path + ": element vertex lacks x, y or z");
         if (e.name == "face" && iface < 0) throw MeshFileError(path + ": element face lacks a vertex_indices list");
         if (e.name == "vertex") mesh.positions.reserve(e.count);
-        std::vector<double> values;
+        if (e.name == "face") mesh.indices.reserve(e.count * 3);
+        std::vector<double> values(e.props.size(), 0.0);
         std::vector<long long> face;
         for (size_t r = 0; r < e.count; ++r) {
-            std::string elementWhere;
-            std::istringstream ls;
+            const char* lineEnd = dataEnd;
             if (!binary) {
-                do {
-                    if (!std::getline(in, line))
+                // Next non-blank line.
+                for (;;) {
+                    if (cur >= dataEnd)
                         throw MeshFileError(path + ": file ends inside element '" + e.name + "' (" + std::to_string(r) +
                                             " of " + std::to_string(e.count) + " read)");
+                    lineEnd = static_cast<const char*>(std::memchr(cur, '\n', size_t(dataEnd - cur)));
+                    if (!lineEnd) lineEnd = dataEnd;
                     ++lineNo;
-                } while (line.find_first_not_of(" \t\r") == std::string::npos);
-                ls.str(line);
-                ls.clear();
-                elementWhere = where();
-            } else {
-                elementWhere = path + ": " + e.name + " " + std::to_string(r);
+                    if (std::string_view(cur, size_t(lineEnd - cur)).find_first_not_of(" \t\r") != std::string_view::npos)
+                        break;
+                    cur = lineEnd < dataEnd ? lineEnd + 1 : dataEnd;
+                }
             }
-            values.assign(e.props.size(), 0.0);
+            auto elementWhere = [&] {
+                return binary ? path + ": " + e.name + " " + std::to_string(r) : path + ":" + std::to_string(lineNo);
+            };
             for (size_t p = 0; p < e.props.size(); ++p) {
                 const PlyProperty& prop = e.props[p];
                 auto readOne = [&](PlyType t, double& v) {
-                    bool ok = binary ? readBinary(in, t, v) : bool(ls >> v);
-                    if (!ok) throw MeshFileError(elementWhere + ": cannot read property '" + prop.name + "'");
+                    bool ok = binary ? readBinary(cur, dataEnd, t, v) : readAscii(cur, lineEnd, v);
+                    if (!ok) throw MeshFileError(elementWhere() + ": cannot read property '" + prop.name + "'");
                 };
                 if (prop.isList) {
                     double cnt;
                     readOne(prop.countType, cnt);
-                    if (cnt < 0 || cnt > 1024) throw MeshFileError(elementWhere + ": bad list length");
+                    if (cnt < 0 || cnt > 1024) throw MeshFileError(elementWhere() + ": bad list length");
                     face.clear();
                     for (int k = 0; k < int(cnt); ++k) {
                         double v;
@@ -192,13 +217,14 @@ TriangleMesh readPly(const std::string& path) {
                     readOne(prop.type, values[p]);
                 }
             }
+            if (!binary) cur = lineEnd < dataEnd ? lineEnd + 1 : dataEnd;
             if (e.name == "vertex") {
                 Vec3 v(float(values[size_t(ix)]), float(values[size_t(iy)]), float(values[size_t(iz)]));
                 if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-                    throw MeshFileError(elementWhere + ": non-finite vertex");
+                    throw MeshFileError(elementWhere() + ": non-finite vertex");
                 mesh.positions.push_back(v);
             } else if (e.name == "face") {
-                if (face.size() > 4) throw MeshFileError(elementWhere + ": a face with " + std::to_string(face.size()) +
+                if (face.size() > 4) throw MeshFileError(elementWhere() + ": a face with " + std::to_string(face.size()) +
                                                          " vertices; expected triangles or quads");
                 addPolygon(mesh, face, vertexCount, elementWhere);
             }
@@ -240,7 +266,7 @@ TriangleMesh readObj(const std::string& path) {
                 // Negative: relative to the vertices defined so far.
                 idx.push_back(i > 0 ? i - 1 : (long long)(mesh.positions.size()) + i);
             }
-            addPolygon(mesh, idx, mesh.positions.size(), where);
+            addPolygon(mesh, idx, mesh.positions.size(), [&] { return where; });
         }
     }
     if (mesh.indices.empty()) throw MeshFileError(path + ": no faces");
