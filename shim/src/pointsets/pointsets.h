@@ -14,11 +14,12 @@ namespace stipple::pointsets {
 inline constexpr uint32_t kMaxPoints = 1u << 22;
 
 // Exactly n points in [0,1)^dim (dim 1..3), interleaved, toroidal domain. Deterministic in seed.
-// High quality: minimum-distance-targeted relaxation (see shim/POINTSETS.md). Spatially shuffled order.
+// High quality: overlap-removal relaxation to rho >= 0.855 in 2D (see shim/POINTSETS.md); order shuffled.
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
 
 // The study's Algorithm 1: dart throwing with r0 = N^(-1/dim), r <- 0.75 r after TRY_LIMIT = 100
 // consecutive failures, neighbour search in an ordered set (1D), quadtree (2D) or octree (3D).
+// Points in the order they were accepted.
 std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed);
 
 // rho = d_min / d_max on the unit torus, d_max the densest packing distance of n points

@@ -1,16 +1,16 @@
 // poisson.cpp — "poisson": high-quality toroidal Poisson-disk sets of exactly N points, fast.
 //
 // Method (see shim/POINTSETS.md for the measurements behind each choice):
-//  1. Start: N points jittered in strata of rows (layers x rows in 3D) with counts differing by at most
-//     one: the right density everywhere, isotropic enough once relaxed.
+//  1. Start: uniform random points stratified in coarse cells of ~4 points (8 in 3D): the right density
+//     everywhere without imprinting a lattice (one point per stratum does imprint one).
 //  2. Overlap removal (overlap_relaxation.h): soft disks of diameter R = 0.89 d_max (3D: 0.88) pushed
-//     apart pairwise in Gauss-Seidel passes over a uniform grid, over-relaxed (omega = 1.6). R lies in the
-//     dense-fluid regime of hard disks (packing fraction 0.72 < hexagonal 0.907), so passes converge in
-//     ~13 passes and leave an amorphous, isotropic packing rather than a crystal.
+//     apart pairwise in Gauss-Seidel passes over a uniform grid, over-relaxed (omega = 1.6). R lies at the
+//     edge of the dense-fluid regime of hard disks (packing fraction 0.72 < hexagonal 0.907), so ~13 passes
+//     converge and leave an amorphous, isotropic packing rather than a crystal.
 //  3. Stop once a pass meets no pair closer than 0.86 d_max and an exact measurement confirms
 //     rho >= 0.855 (3D: 0.84 / 0.835). A set that misses within maxPasses is redrawn from a derived
-//     seed (at most maxAttempts(n), best kept): this only happens at tiny N where the torus cannot hold
-//     the target packing (N = 3: rho <= 0.76 for any set).
+//     seed, each retry aiming 1.5% lower (at most maxAttempts(n), best kept): in practice only tiny N,
+//     where the torus cannot hold the target packing (N = 3: the optimum is rho = 0.834).
 //  4. Shuffle the order (the relaxation leaves points in cell order).
 //
 // 1D is different: the maximin optimum is the equidistant lattice (rho = 1), unique up to a shift, so we
@@ -18,7 +18,6 @@
 #include "pointsets.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 

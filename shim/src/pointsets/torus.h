@@ -9,10 +9,11 @@ namespace stipple::pointsets {
 // Largest float below 1: every coordinate we hand out is <= this.
 inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
-// Wraps x into [0,1). floor() alone is not enough: x - floor(x) rounds to 1.0f for tiny negative x.
+// Wraps x into [0,1). floor() alone is not enough: x - floor(x) rounds to 1.0f for tiny negative x, which
+// is 0 on the torus (and NaN, which never occurs in our sets, becomes 0 too).
 inline float wrapUnit(float x) {
     float w = x - std::floor(x);
-    return w < kOneMinusEpsilon ? w : (w >= 1.0f ? 0.0f : w);
+    return w < 1.0f ? w : 0.0f;
 }
 inline float clampBelowOne(double x) {
     float f = float(x);
