@@ -219,7 +219,7 @@ TriangleMesh readPly(const std::string& path) {
             }
             if (!binary) cur = lineEnd < dataEnd ? lineEnd + 1 : dataEnd;
             if (e.name == "vertex") {
-                Vec3 v(float(values[size_t(ix)]), float(values[size_t(iy)]), float(values[size_t(iz)]));
+                Vec3 v{float(values[size_t(ix)]), float(values[size_t(iy)]), float(values[size_t(iz)])}; // braces: with parentheses this parses as a function declaration (clang rejects it)
                 if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
                     throw MeshFileError(elementWhere() + ": non-finite vertex");
                 mesh.positions.push_back(v);
