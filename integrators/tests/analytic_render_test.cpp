@@ -3,7 +3,7 @@
 //    pattern, path tracer;
 //  - a square light over a diffuse plane -> the closed-form radiance albedo * L * F, direct integrator.
 // Pass when |mean - expected| <= z * sigma + bias, where sigma bounds the standard deviation of the image mean
-// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 9
+// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 10
 // renders here, and bias is the stated deterministic allowance (0 for the sphere; 0.3% for the plane, whose
 // pixels see a patch 0.06 wide over which the exact radiance varies by less than 0.1%).
 #define BOOST_TEST_MODULE analytic_render
@@ -11,11 +11,13 @@
 
 #include "test_support.h"
 
+#include <iterator>
+
 using namespace stipple::render;
 using namespace stipple::render::test;
 
 namespace {
-constexpr int kTests = 9;
+constexpr int kTests = 10;
 } // namespace
 
 BOOST_AUTO_TEST_CASE(furnace_sphere_is_one_for_every_pattern) {
@@ -97,4 +99,24 @@ BOOST_AUTO_TEST_CASE(square_light_over_plane_matches_form_factor) {
     BOOST_TEST_MESSAGE("plane: mean " << e.mean << " expected " << expected << " sigma " << sigma);
     BOOST_TEST(std::abs(e.mean - expected) <= z * sigma + 0.003 * expected,
                "mean " << e.mean << ", expected " << expected << " +- " << z * sigma + 0.003 * expected);
+}
+
+BOOST_AUTO_TEST_CASE(direct_with_four_light_samples) {
+    // light_samples: 4 declares b0.light.pos and b0.bsdf.dir with k = 4 and averages them: same closed form.
+    std::ifstream in(scenePath("quad-light-plane.yaml"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    size_t at = text.find("light_samples: 1");
+    BOOST_REQUIRE(at != std::string::npos);
+    text.replace(at, 16, "light_samples: 4");
+    auto scene = Scene::load(writeTempFile("quad-light-plane-k4.yaml", text));
+    RenderOptions o;
+    o.pattern = "stratified";
+    o.spp = 16;
+    o.seed = 9;
+    RenderResult r = scene->render(o);
+    BOOST_TEST(r.layout == "0 pixel 2D x1\n1 b0.light.pos 2D x4\n2 b0.bsdf.dir 2D x4\n");
+    ImageEstimate e = estimate(r);
+    double expected = squareLightExpected();
+    double tol = sidakZ(0.01, kTests) * std::sqrt(e.variance) + 0.003 * expected;
+    BOOST_TEST(std::abs(e.mean - expected) <= tol, "mean " << e.mean << ", expected " << expected << " +- " << tol);
 }
