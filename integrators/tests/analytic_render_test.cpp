@@ -3,7 +3,7 @@
 //    pattern, path tracer;
 //  - a square light over a diffuse plane -> the closed-form radiance albedo * L * F, direct integrator.
 // Pass when |mean - expected| <= z * sigma + bias, where sigma bounds the standard deviation of the image mean
-// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 10
+// (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 11
 // renders here, and bias is the stated deterministic allowance (0 for the sphere; 0.3% for the plane, whose
 // pixels see a patch 0.06 wide over which the exact radiance varies by less than 0.1%).
 #define BOOST_TEST_MODULE analytic_render
@@ -17,7 +17,7 @@ using namespace stipple::render;
 using namespace stipple::render::test;
 
 namespace {
-constexpr int kTests = 10;
+constexpr int kTests = 11;
 } // namespace
 
 BOOST_AUTO_TEST_CASE(furnace_sphere_is_one_for_every_pattern) {
@@ -119,4 +119,21 @@ BOOST_AUTO_TEST_CASE(direct_with_four_light_samples) {
     double expected = squareLightExpected();
     double tol = sidakZ(0.01, kTests) * std::sqrt(e.variance) + 0.003 * expected;
     BOOST_TEST(std::abs(e.mean - expected) <= tol, "mean " << e.mean << ", expected " << expected << " +- " << tol);
+}
+
+BOOST_AUTO_TEST_CASE(furnace_sphere_through_a_thin_lens) {
+    // A thin-lens camera inside the furnace: still radiance 1; the layout gains "lens" right after "pixel".
+    std::ifstream in(scenePath("furnace-sphere.yaml"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    size_t at = text.find("type: pinhole,");
+    BOOST_REQUIRE(at != std::string::npos);
+    text.replace(at, 14, "type: thinlens, lens_radius: 0.2, focus_distance: 0.7,");
+    auto scene = Scene::load(writeTempFile("furnace-thinlens.yaml", text));
+    RenderOptions o;
+    o.seed = 13;
+    RenderResult r = scene->render(o);
+    BOOST_TEST(r.layout.find("0 pixel 2D x1\n1 lens 2D x1\n2 b0.light.pos 2D x1\n") == 0u, r.layout);
+    ImageEstimate e = estimate(r);
+    double tol = sidakZ(0.01, kTests) * std::sqrt(e.variance);
+    BOOST_TEST(std::abs(e.mean - 1.0) <= tol, "mean " << e.mean << ", expected 1 +- " << tol);
 }
