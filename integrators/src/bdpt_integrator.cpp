@@ -10,16 +10,14 @@
 // (TransportMode::Importance: no 1/eta^2 at refractions, shading-normal correction). No Russian roulette: the
 // walks stop at the depth limit, so every strategy's density is known exactly.
 //
-// Dimensions (max depth D; only what the scene uses; bB = scattering at the B-th surface hit of that subpath):
-//   cam.bB.bsdf.lobe 1D, cam.bB.bsdf.dir 2D           B = 0 .. D-1  (lobe only when a material has two lobes)
-//   light.choice 1D (more than one light), light.pos 2D, light.dir 2D (D >= 1)
-//   light.bB.bsdf.lobe 1D, light.bB.bsdf.dir 2D       B = 0 .. D-2
-//   connect.s1.tT.light.choice 1D, connect.s1.tT.light.pos 2D   T = 2 .. D+1 (the fresh s = 1 samples)
+// Dimensions: the walks' (bdpt_subpath.h), then per connection (max depth D; only what the scene uses):
+//   connect.s1.tT.light.choice 1D (more than one light), connect.s1.tT.light.pos 2D   T = 2 .. D+1
 //   connect.t1.sS.lens 2D                             S = 1 .. D+1, thin-lens cameras only
-// Light subpath and s = 1 dimensions are skipped when every material is specular (no connection can be made).
+// Light walks and s = 1 samples are skipped when every material is specular (no connection can be made).
 #include "bdpt_integrator.h"
 
 #include "bdpt_mis.h"
+#include "bdpt_subpath.h"
 #include "bdpt_vertex.h"
 #include "integrator_registry.h"
 
@@ -69,39 +67,19 @@ StrategyFilter parseVariant(const std::string& name) {
 
 namespace {
 
-struct BounceDims {
-    int lobe = -1, dir = -1;
-};
-
 class BdptIntegrator final : public Integrator {
 public:
     BdptIntegrator(const RenderScene& scene, const Camera& camera, const IntegratorSettings& s, std::string name)
         : scene_(scene), camera_(camera), eval_(scene, camera), mis_(eval_), maxDepth_(std::max(0, s.maxDepth)),
-          name_(std::move(name)), filter_(parseVariant(name_)) {}
+          subpaths_(scene, camera, maxDepth_), name_(std::move(name)), filter_(parseVariant(name_)) {}
 
     const char* name() const override { return name_.c_str(); }
 
     void declareDimensions(SampleLayout& layout) override {
         const size_t nLights = scene_.lights().size();
         if (nLights == 0) return; // nothing can be seen: no dimension is read
-        const bool lobe = scene_.anyMaterialUsesLobeChoice();
         const bool connectible = scene_.anyNonSpecularMaterial();
-        auto bounce = [&](const std::string& prefix) {
-            BounceDims d;
-            if (lobe) d.lobe = layout.add(prefix + "bsdf.lobe", 1);
-            d.dir = layout.add(prefix + "bsdf.dir", 2);
-            return d;
-        };
-        camBounce_.clear();
-        for (int b = 0; b < maxDepth_; ++b) camBounce_.push_back(bounce("cam.b" + std::to_string(b) + "."));
-        if (nLights > 1) lightChoice_ = layout.add("light.choice", 1);
-        lightPos_ = layout.add("light.pos", 2);
-        lightBounce_.clear();
-        if (connectible && maxDepth_ >= 1) {
-            lightDir_ = layout.add("light.dir", 2);
-            for (int b = 0; b + 2 <= maxDepth_; ++b)
-                lightBounce_.push_back(bounce("light.b" + std::to_string(b) + "."));
-        }
+        subpaths_.declareDimensions(layout, connectible);
         connectChoice_.assign(size_t(maxDepth_ + 2), -1);
         connectPos_.assign(size_t(maxDepth_ + 2), -1);
         if (connectible) {
@@ -120,8 +98,8 @@ public:
     Spectrum Li(const Ray& ray, const SampleView& sv, TileContext& tile) const override {
         if (scene_.lights().empty()) return {};
         thread_local std::vector<PathVertex> cam, light;
-        cameraSubpath(ray, sv, tile, cam);
-        lightSubpath(sv, tile, light);
+        subpaths_.cameraSubpath(ray, sv, tile, cam);
+        subpaths_.lightSubpath(sv, tile, light);
 
         Spectrum L;
         const int nCam = int(cam.size()), nLight = int(light.size());
@@ -144,79 +122,6 @@ public:
     }
 
 private:
-    // Scatters from the last vertex of `path` along `ray` until maxSurface surface vertices were added, the ray
-    // escapes or sampling fails. dims[b] drives the scattering at the b-th surface vertex.
-    void walk(Ray ray, Spectrum beta, float pdfDir, TransportMode mode, const std::vector<BounceDims>& dims,
-              int maxSurface, const SampleView& sv, TileContext& tile, std::vector<PathVertex>& path) const {
-        for (int b = 0; b < maxSurface; ++b) {
-            SurfaceHit hit;
-            ++tile.rays;
-            if (!scene_.intersect(ray, hit)) return;
-            PathVertex v;
-            v.kind = VertexKind::Surface;
-            v.p = hit.p;
-            v.n = v.ns = hit.ng;
-            v.material = hit.material;
-            v.light = hit.light;
-            v.beta = beta;
-            v.delta = hit.material->isSpecular();
-            v.pdfFwd = PathEvaluator::toArea(pdfDir, path.back(), v);
-            path.push_back(v);
-            if (b + 1 >= maxSurface || size_t(b) >= dims.size()) return;
-
-            Frame frame(v.ns);
-            Vec3 woW = -ray.d, wo = frame.toLocal(woW);
-            BsdfSample bs;
-            if (!v.material->sample(wo, sv.get1D(dims[size_t(b)].lobe), sv.get2D(dims[size_t(b)].dir), bs, mode))
-                return;
-            Vec3 wiW = frame.toWorld(bs.wi);
-            beta *= bs.f * (std::abs(bs.wi.z) / bs.pdf);
-            if (mode == TransportMode::Importance) beta *= shadingNormalCorrection(v.ns, v.n, woW, wiW);
-            // Densities of a delta lobe are Dirac terms: stored as 0, read as 1 by the MIS walk.
-            pdfDir = bs.isSpecular() ? 0.0f : bs.pdf;
-            float pdfRevDir = bs.isSpecular() ? 0.0f : v.material->pdf(bs.wi, wo);
-            PathVertex& prev = path[path.size() - 2];
-            prev.pdfRev = PathEvaluator::toArea(pdfRevDir, path.back(), prev);
-            if (beta.isBlack()) return;
-            ray = Ray{offsetRayOrigin(v.p, v.n, wiW), wiW};
-        }
-    }
-
-    void cameraSubpath(const Ray& ray, const SampleView& sv, TileContext& tile, std::vector<PathVertex>& cam) const {
-        cam.clear();
-        PathVertex z0;
-        z0.kind = VertexKind::Camera;
-        z0.p = ray.o;
-        z0.n = z0.ns = camera_.forward();
-        z0.beta = Spectrum(1.0f); // We cos / (pdfPos pdfDir) = 1 for raster-uniform primary rays
-        cam.push_back(z0);
-        float pdfPos, pdfDir;
-        camera_.pdfWe(ray, pdfPos, pdfDir);
-        walk(ray, Spectrum(1.0f), pdfDir, TransportMode::Radiance, camBounce_, maxDepth_ + 1, sv, tile, cam);
-    }
-
-    void lightSubpath(const SampleView& sv, TileContext& tile, std::vector<PathVertex>& light) const {
-        light.clear();
-        if (lightPos_ < 0) return;
-        float pmf = 1;
-        size_t li = scene_.lights().size() == 1 ? 0 : scene_.lightChoice().sample(sv.get1D(lightChoice_), &pmf);
-        const Light& l = scene_.lights()[li];
-        LightLeSample le;
-        if (!l.sampleLe(sv.get2D(lightPos_), sv.get2D(lightDir_), le)) return;
-        PathVertex y0;
-        y0.kind = VertexKind::Light;
-        // sampleLe offsets the ray origin off the light along the emitting side; undo it for the vertex itself.
-        y0.p = le.ray.o - le.n * surfaceEpsilon(le.ray.o);
-        y0.n = y0.ns = le.n;
-        y0.light = int(li);
-        y0.pdfFwd = pmf * le.pdfPos;
-        y0.beta = Spectrum(1 / y0.pdfFwd); // the light vertex's "f" is its emitted radiance (PathEvaluator::f)
-        light.push_back(y0);
-        if (lightDir_ < 0) return;
-        Spectrum beta = le.L * (absDot(le.n, le.ray.d) / (y0.pdfFwd * le.pdfDir));
-        walk(le.ray, beta, le.pdfDir, TransportMode::Importance, lightBounce_, maxDepth_, sv, tile, light);
-    }
-
     float weight(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int s, int t,
                  const ConnectionVertices& fresh) const {
         return filter_.weighted ? mis_.weight(light, cam, s, t, fresh) : 1.0f;
@@ -300,10 +205,9 @@ private:
     PathEvaluator eval_;
     MisWeights mis_;
     int maxDepth_;
+    SubpathGenerator subpaths_;
     std::string name_;
     StrategyFilter filter_;
-    std::vector<BounceDims> camBounce_, lightBounce_;
-    int lightChoice_ = -1, lightPos_ = -1, lightDir_ = -1;
     std::vector<int> connectChoice_, connectPos_, connectLens_; // indexed by t (s = 1) and by s (t = 1)
 };
 
