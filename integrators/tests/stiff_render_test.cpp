@@ -175,7 +175,8 @@ BOOST_AUTO_TEST_CASE(zero_radiance_light_gives_black_without_nan) {
 }
 
 BOOST_AUTO_TEST_CASE(max_depth_0_1_and_1000) {
-    // Furnace of albedo 0.9 emitting 0.1: radiance 1 - 0.9^(d+1). d = 0 is deterministic (emission only).
+    // Furnace of albedo 0.9 emitting 0.1: radiance 1 - 0.9^(d+1). d = 0 is deterministic (emission only); d = 1000
+    // must terminate (Russian roulette) with a finite image.
     auto scene = Scene::load(stiffScene("furnace-deep.yaml"));
     RenderResult r0 = renderScene(*scene, "stratified", 41, 0);
     checkFinite(r0, "max depth 0");
@@ -190,7 +191,7 @@ BOOST_AUTO_TEST_CASE(max_depth_0_1_and_1000) {
         const double expected = 1 - std::pow(0.9, depth + 1), sigma = std::sqrt(e.variance);
         BOOST_TEST_MESSAGE("max depth " << depth << ": mean " << e.mean << " expected " << expected << " sigma "
                                         << sigma << ", " << seconds << " s, " << r.raysTraced << " rays");
-        BOOST_TEST(sigma > 0.0);
-        BOOST_TEST(std::abs(e.mean - expected) <= z * sigma, "depth " << depth << ": mean " << e.mean);
+        // Bias allowance 1e-5 relative: float accumulation (at depth 1 the furnace is nearly deterministic).
+        BOOST_TEST(std::abs(e.mean - expected) <= z * sigma + 1e-5 * expected, "depth " << depth << ": mean " << e.mean);
     }
 }
