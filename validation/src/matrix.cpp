@@ -143,7 +143,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
             ms.file = P.get<std::string>(s, "scene file");
         } else {
             P.expectMap(s, "a scene entry");
-            P.onlyKeys(s, {"file", "name", "width", "height", "integrator", "max_depth"}, "a scene entry");
+            P.onlyKeys(s, {"file", "name", "width", "height", "integrator", "max_depth", "reference_spp"}, "a scene entry");
             ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
             if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
             if (s["width"]) ms.width = P.dimension(s["width"], "width");
@@ -153,6 +153,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
                 if (ms.integrator != "path" && ms.integrator != "direct" && ms.integrator != "bdpt")
                     P.fail(s["integrator"], "unknown integrator '" + ms.integrator + "' (known: path, direct, bdpt)");
             }
+            if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
             if (s["max_depth"]) {
                 ms.maxDepth = P.get<int>(s["max_depth"], "max_depth");
                 if (ms.maxDepth < 0) P.fail(s["max_depth"], "max_depth must be ≥ 0");
@@ -213,6 +214,10 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         if (std::find(m.seeds.begin(), m.seeds.end(), m.reference.seed) != m.seeds.end())
             P.fail(r, "the reference seed must differ from the cells' seeds (its noise would correlate with theirs)");
     }
+    for (size_t i = 0; i < m.scenes.size(); ++i)
+        if (m.scenes[i].referenceSpp && m.scenes[i].referenceSpp < 4 * m.spp.back())
+            P.fail(scenes[i], "reference_spp (" + std::to_string(m.scenes[i].referenceSpp) +
+                                  ") must be ≥ 4× the largest cell spp (" + std::to_string(m.spp.back()) + ")");
     if (m.reference.spp < 4 * m.spp.back())
         P.fail(croot["reference"] ? croot["reference"] : croot,
                "reference spp (" + std::to_string(m.reference.spp) + ") must be ≥ 4× the largest cell spp (" +

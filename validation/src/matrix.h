@@ -22,6 +22,7 @@ struct MatrixScene {
     int width = 0, height = 0; // 0: the scene's default
     std::string integrator;  // empty: the scene's
     int maxDepth = -1;       // -1: the scene's
+    uint32_t referenceSpp = 0; // 0: the matrix's reference spp (a noisy scene may need more)
 };
 
 struct ReferenceSettings {

@@ -97,7 +97,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
 
             render::RenderOptions refOptions = base;
             refOptions.pattern = m.reference.pattern;
-            refOptions.spp = m.reference.spp;
+            refOptions.spp = ms.referenceSpp ? ms.referenceSpp : m.reference.spp;
             refOptions.seed = m.reference.seed;
             progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d (key %s)", ms.name.c_str(),
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
