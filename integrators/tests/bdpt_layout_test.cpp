@@ -48,6 +48,14 @@ BOOST_AUTO_TEST_CASE(thin_lens_declares_lens_connections) {
                "connect.t1.s1.lens/2 connect.t1.s2.lens/2");
 }
 
+BOOST_AUTO_TEST_CASE(scene_file_selects_bdpt) {
+    auto scene = Scene::load(scenePath("bdpt-glass-box.yaml"));
+    BOOST_TEST(scene->defaultIntegrator() == "bdpt");
+    std::string layout = scene->describeLayout(RenderOptions{});
+    BOOST_TEST(layout.find("cam.b0.bsdf.lobe") != std::string::npos, layout); // the dielectric has two lobes
+    BOOST_TEST(layout.find("connect.s1.t2.light.pos") != std::string::npos, layout);
+}
+
 BOOST_AUTO_TEST_CASE(variants_parse) {
     bdpt::StrategyFilter f = bdpt::parseVariant("bdpt");
     BOOST_TEST((f.s == -1 && f.depth == -1 && f.weighted));
