@@ -128,3 +128,33 @@ BOOST_AUTO_TEST_CASE(loader_shapes_instances_includes) {
     BOOST_REQUIRE(scene.intersect(Ray{{0.9f, 0.001f, 0.9f}, {0, -1, 0}}, hit));
     BOOST_TEST(hit.light == 1);
 }
+
+BOOST_AUTO_TEST_CASE(instanced_spheres_hit_and_emit_in_world_space) {
+    std::string main = writeTempFile(
+        "spheres.yaml",
+        "name: spheres\n"
+        "camera: { position: [0, 0, 5], look_at: [0, 0, 0], fov: 40 }\n"
+        "materials:\n  white: { type: diffuse, albedo: 0.5 }\n"
+        "objects:\n  ball:\n    - { type: sphere, center: [0, 0, 0], radius: 0.5, material: white, emission: 2 }\n"
+        "shapes:\n"
+        "  - { type: instance, object: ball, transform: [ {scale: 2}, {translate: [10, 0, 0]} ] }\n"
+        "  - { type: instance, object: ball, transform: [ {translate: [-10, 0, 0]} ] }\n");
+    RenderScene scene(loadSceneDescription(main));
+    BOOST_REQUIRE_EQUAL(scene.lights().size(), 2u);
+    BOOST_TEST(std::abs(scene.lights()[0].area() - float(4 * M_PI)) < 1e-4f); // radius 1 after scaling by 2
+    SurfaceHit hit;
+    BOOST_REQUIRE(scene.intersect(Ray{{10, 5, 0}, {0, -1, 0}}, hit));
+    BOOST_TEST(std::abs(hit.p.y - 1) < 1e-5f); // top of the scaled sphere
+    BOOST_TEST(hit.ng.y > 0.9999f);
+    BOOST_TEST(hit.light == 0);
+    BOOST_REQUIRE(scene.intersect(Ray{{-12, 0, 0}, {1, 0, 0}}, hit));
+    BOOST_TEST(std::abs(hit.p.x + 10.5f) < 1e-5f);
+    BOOST_TEST(hit.ng.x < -0.9999f);
+    BOOST_TEST(hit.light == 1);
+    // The light samples the instance's world-space sphere: a point sampled from above lies on it.
+    LightLiSample ls;
+    BOOST_REQUIRE(scene.lights()[0].sampleLi({10, 5, 0}, {0.3f, 0.7f}, ls));
+    BOOST_TEST(std::abs(length(ls.p - Vec3(10, 0, 0)) - 1) < 1e-4f);
+    BOOST_TEST(!scene.occluded(Ray{{0, 5, 0}, {0, -1, 0}}));
+    BOOST_TEST(scene.occluded(Ray{{10, 5, 0}, {0, -1, 0}, 10}));
+}
