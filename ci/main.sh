@@ -8,7 +8,7 @@ bash ci/install-deps.sh
 cmake --preset release
 cmake --build --preset release -j 2
 status=0
-build/release/bin/stipple-validate validation/quick.yaml -o report --threads 2 || status=$?
+build/release/bin/stipple-validate validation/quick.yaml -o report --threads 2 --cache build/stipple-cache || status=$?
 if [ -f report/index.html ]; then
   echo "main: report written to $(pwd)/report/index.html"
 else

@@ -73,6 +73,7 @@ BOOST_AUTO_TEST_CASE(good_matrix_reads) {
     BOOST_CHECK((m.spp == std::vector<uint32_t>{4, 16})); // sorted
     BOOST_CHECK((m.seeds == std::vector<uint64_t>{1, 2, 3, 4}));
     BOOST_CHECK_EQUAL(m.reference.spp, 256u);
+    BOOST_CHECK_EQUAL(m.scenes[1].referenceSpp, 0u); // 0: the matrix's reference spp
     BOOST_CHECK_EQUAL(m.reference.pattern, "independent");
     BOOST_REQUIRE_EQUAL(m.checks.size(), 4u);
     BOOST_CHECK(m.checks[0].type == CheckType::Ordering);
@@ -110,6 +111,8 @@ BOOST_AUTO_TEST_CASE(bad_values_are_errors) {
     expectError(f, replaced(good, "spp: 256", "spp: 32"), {"must be ≥ 4× the largest cell spp"});
     expectError(f, replaced(good, "width: 32", "width: -2"), {f.path() + ":4:12", "width must be in"});
     expectError(f, replaced(good, "seed: 99", "seed: 3"), {"reference seed must differ"});
+    expectError(f, replaced(good, "name: veach }", "name: veach, reference_spp: 32 }"),
+                {f.path() + ":6:5", "reference_spp (32) must be ≥ 4× the largest cell spp (16)"});
     expectError(f, replaced(good, "max: 1.05", "max: 0"), {":14:87", "max must be > 0"});
     expectError(f, "- a\n- b\n", {f.path() + ":1:1", "must be a YAML map"});
 }
