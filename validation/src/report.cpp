@@ -147,6 +147,7 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
     const Results& r = *in.results;
     fs::create_directories(dir);
     writeResultsCsv((fs::path(dir) / "results.csv").string(), r.rows);
+    writeCellsCsv((fs::path(dir) / "cells.csv").string(), in.cells);
     writeResultsJson((fs::path(dir) / "results.json").string(), r, in.cells, in.slopes, outcomesJson(in.outcomes));
     bool plotsOk = writePlots(dir, in);
 
@@ -244,7 +245,7 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
     o << "</table>\n";
 
     o << "<h2>All cells</h2>\n" << cellTable(m, in.cells, 0);
-    o << "<p>Per seed: <a href=\"results.csv\">results.csv</a>, <a href=\"results.json\">results.json</a>.</p>\n";
+    o << "<p>Per seed: <a href=\"results.csv\">results.csv</a>, <a href=\"results.json\">results.json</a>; per cell: <a href=\"cells.csv\">cells.csv</a>.</p>\n";
     o << "<h2>Matrix " << html(m.path) << "</h2>\n<pre>" << html(m.text) << "</pre>\n</body></html>\n";
     writeTextFile((fs::path(dir) / "index.html").string(), o.str());
     return plotsOk;

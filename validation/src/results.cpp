@@ -162,6 +162,21 @@ void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows
     writeTextFile(path, o.str());
 }
 
+void writeCellsCsv(const std::string& path, const std::vector<CellAggregate>& cells) {
+    std::ostringstream o;
+    o << "scene,pattern,spp,seeds,mean_rms,rms_ci95,mean_rms_measured,mean_mse_corrected,floor_limited_seeds,"
+         "non_finite_pixels,efficiency,median_render_seconds,median_sampler_seconds\n";
+    char buf[512];
+    for (const auto& c : cells) {
+        std::snprintf(buf, sizeof buf, "%s,%s,%u,%zu,%.9g,%.9g,%.9g,%.9g,%d,%llu,%.6g,%.6f,%.6f\n", c.scene.c_str(),
+                      c.pattern.c_str(), c.spp, c.seeds, c.rms.mean, c.rms.halfWidth, c.meanRmsMeasured,
+                      c.meanMseCorrected, c.floorLimitedSeeds, (unsigned long long)c.nonFinitePixels, c.efficiency,
+                      c.medianRenderSeconds, c.medianSamplerSeconds);
+        o << buf;
+    }
+    writeTextFile(path, o.str());
+}
+
 void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
                       const std::vector<SlopeFit>& slopes, const std::string& checksJson) {
     std::ostringstream o;

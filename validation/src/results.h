@@ -73,6 +73,8 @@ const CellAggregate* findCell(const std::vector<CellAggregate>& cells, const std
                               const std::string& pattern, uint32_t spp);
 
 void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows);
+// The per-cell aggregates: mean RMS with its 95% half width, medians, efficiency.
+void writeCellsCsv(const std::string& path, const std::vector<CellAggregate>& cells);
 // Writes everything: rows, scenes, aggregates, slopes; `extraJson` (a JSON value) goes under "checks".
 void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
                       const std::vector<SlopeFit>& slopes, const std::string& checksJson);
