@@ -164,7 +164,9 @@ RenderScene::RenderScene(SceneDescription desc) : desc_(std::move(desc)) {
     buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     std::vector<double> power;
-    for (const Light& l : lights_) power.push_back(l.power());
+    // By power unless the scene asks for uniform choice (Veach's MIS scene: a bright fill light would take
+    // nearly every light sample away from the four lights the scene is about).
+    for (const Light& l : lights_) power.push_back(desc_.settings.uniformLightSelection ? 1.0 : l.power());
     lightChoice_ = DiscreteDistribution(power);
 }
 

@@ -53,6 +53,7 @@ struct RenderSettings {
     int height = 256;
     uint32_t spp = 16;
     uint32_t lightSamples = 1;
+    bool uniformLightSelection = false; // light_selection: uniform; default power
 };
 
 struct SceneDescription {

@@ -196,7 +196,7 @@ void Loader::loadMain(const std::string& path) {
 
 void Loader::parseRender(const YAML::Node& n) {
     if (!n.IsMap()) fail(n, "render", "a map");
-    checkKeys(n, "render", {"integrator", "max_depth", "width", "height", "spp", "light_samples"});
+    checkKeys(n, "render", {"integrator", "max_depth", "width", "height", "spp", "light_samples", "light_selection"});
     RenderSettings& s = desc_.settings;
     if (n["integrator"]) s.integrator = oneOf(n["integrator"], "integrator", {"path", "direct", "bdpt"});
     if (n["max_depth"]) s.maxDepth = int(integer(n["max_depth"], "max_depth", 0, 1000));
@@ -204,6 +204,8 @@ void Loader::parseRender(const YAML::Node& n) {
     if (n["height"]) s.height = int(integer(n["height"], "height", 1, 1 << 15));
     if (n["spp"]) s.spp = uint32_t(integer(n["spp"], "spp", 1, 1 << 20));
     if (n["light_samples"]) s.lightSamples = uint32_t(integer(n["light_samples"], "light_samples", 1, 1024));
+    if (n["light_selection"])
+        s.uniformLightSelection = oneOf(n["light_selection"], "light_selection", {"power", "uniform"}) == "uniform";
 }
 
 void Loader::parseCamera(const YAML::Node& n) {

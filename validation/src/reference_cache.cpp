@@ -1,5 +1,6 @@
 #include "reference_cache.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -27,7 +28,7 @@ std::string referenceKey(const render::Scene& scene, const render::RenderOptions
     std::string material = scene.contentHash() + "|" + render::rendererVersion() + "|" + std::to_string(o.width) +
                            "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
                            std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " +
-                           std::to_string(o.maxDepth);
+                           std::to_string(o.maxDepth) + "|halves";
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)fnv1a(material));
     return buf;
@@ -53,9 +54,24 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
     }
 
     fs::create_directories(cacheDir);
-    render::RenderResult r = scene.render(options);
-    ref.image = std::move(r.image);
-    ref.variance = std::move(r.variance);
+    // Two independent halves instead of the film's per-pixel variance: the film's variance misses what BDPT
+    // splats onto other pixels (light tracing, t = 1), so it would understate a BDPT reference's noise.
+    // With halves A and B, (A - B)^2 / 4 is an unbiased estimate of the variance of (A + B) / 2 for any
+    // integrator; its mean over pixels is the noise floor.
+    render::RenderOptions half = options;
+    half.spp = std::max<uint32_t>(1, options.spp / 2);
+    render::RenderResult r = scene.render(half);
+    half.seed = options.seed ^ 0x9e3779b97f4a7c15ull;
+    render::RenderResult r2 = scene.render(half);
+    ref.image = r.image;
+    ref.variance = r.image;
+    for (size_t i = 0; i < ref.image.rgb.size(); ++i) {
+        const float a = r.image.rgb[i], b = r2.image.rgb[i];
+        ref.image.rgb[i] = 0.5f * (a + b);
+        ref.variance.rgb[i] = 0.25f * (a - b) * (a - b);
+    }
+    r.renderSeconds += r2.renderSeconds;
+    r.nonFiniteSamples += r2.nonFiniteSamples;
     ref.renderSeconds = r.renderSeconds;
 
     std::time_t now = std::time(nullptr);
@@ -76,7 +92,7 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
                        ",\n  \"width\": " + std::to_string(options.width) +
                        ",\n  \"height\": " + std::to_string(options.height) +
                        ",\n  \"pattern\": " + jsonString(options.pattern) +
-                       ",\n  \"spp\": " + std::to_string(options.spp) + ",\n  \"seed\": " + std::to_string(options.seed) +
+                       ",\n  \"spp\": " + std::to_string(2 * half.spp) + ",\n  \"halves\": 2" + ",\n  \"seed\": " + std::to_string(options.seed) +
                        ",\n  \"integrator\": " + jsonString(options.integrator) +
                        ",\n  \"max_depth\": " + std::to_string(options.maxDepth) +
                        ",\n  \"render_seconds\": " + jsonNumber(r.renderSeconds) +

@@ -1,5 +1,6 @@
 // The reference image of a scene (independent pattern at high spp), rendered once and cached as EXR + the
-// variance-of-the-mean EXR + provenance JSON, keyed by everything that changes its pixels.
+// variance-of-the-mean EXR + provenance JSON, keyed by everything that changes its pixels. The reference is the
+// mean of two independent half-spp renders; their difference gives the variance (see the .cpp for why).
 #pragma once
 
 #include <string>
@@ -10,7 +11,7 @@ namespace stipple::validation {
 
 struct Reference {
     render::Image image;
-    render::Image variance;   // per-pixel, per-channel variance of the mean
+    render::Image variance;   // per-pixel, per-channel variance of the mean, from two independent halves
     std::string key;          // 16 hex digits
     std::string imagePath;    // the cached EXR
     double renderSeconds = 0; // 0 when read from the cache
