@@ -5,29 +5,18 @@
 
 #include "test_support.h"
 
-#include <cstring>
-
 using namespace stipple::render;
 using namespace stipple::render::test;
 
 namespace {
 void checkIdentical(const std::string& file, const std::string& pattern) {
-    auto s = Scene::load(scenePath(file));
     RenderOptions o;
     o.integrator = "bdpt";
     o.pattern = pattern;
-    o.spp = 4;
-    o.width = 40; // not a multiple of the tile size: partial tiles too
-    o.height = 24;
     o.seed = 9;
-    o.threads = 1;
-    RenderResult a = s->render(o);
-    o.threads = 2;
-    RenderResult b = s->render(o);
-    BOOST_REQUIRE_EQUAL(a.image.rgb.size(), b.image.rgb.size());
-    BOOST_TEST(std::memcmp(a.image.rgb.data(), b.image.rgb.data(), a.image.rgb.size() * sizeof(float)) == 0,
-               file << " " << pattern << ": images differ");
-    BOOST_TEST(std::memcmp(a.variance.rgb.data(), b.variance.rgb.data(), a.variance.rgb.size() * sizeof(float)) == 0);
+    auto [a, b] = renderWithOneAndTwoThreads(file, o);
+    BOOST_TEST(bitwiseEqual(a.image, b.image), file << " " << pattern << ": images differ");
+    BOOST_TEST(bitwiseEqual(a.variance, b.variance));
     BOOST_TEST(a.raysTraced == b.raysTraced);
     BOOST_TEST(a.raysTraced > 0u);
 }

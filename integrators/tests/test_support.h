@@ -6,6 +6,7 @@
 #include <boost/math/distributions/normal.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -48,6 +49,28 @@ inline ImageEstimate estimate(const RenderResult& r, int x0 = 0, int y0 = 0, int
             e.variance += sd * sd / (n * n);
         }
     return e;
+}
+
+// The same render with 1 and with 2 threads, at 40 x 24 (not a multiple of the tile size: partial tiles too).
+struct OneAndTwoThreads {
+    RenderResult one, two;
+};
+inline OneAndTwoThreads renderWithOneAndTwoThreads(const std::string& sceneFile, RenderOptions o) {
+    auto s = Scene::load(scenePath(sceneFile));
+    o.spp = 4;
+    o.width = 40;
+    o.height = 24;
+    o.threads = 1;
+    OneAndTwoThreads r;
+    r.one = s->render(o);
+    o.threads = 2;
+    r.two = s->render(o);
+    return r;
+}
+
+inline bool bitwiseEqual(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
+           std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
 }
 
 // Two-sided critical z for significance alpha split Sidak-style over `tests` tests.
