@@ -32,6 +32,8 @@ namespace stipple::render {
 
 const char* rendererVersion() { return "stipple-render 1.0.0"; }
 
+std::string shimIdentity(const std::string& shimPath) { return ShimLibrary::get(shimPath).identity(); }
+
 namespace {
 
 constexpr int kTileSize = 16;

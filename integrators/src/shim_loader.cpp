@@ -4,7 +4,10 @@
 #include <unistd.h>
 
 #include <climits>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -95,6 +98,26 @@ std::string ShimLibrary::version() const {
     uint32_t major = 0, minor = 0, patch = 0;
     if (api_->get_version(&major, &minor, &patch) != STIPPLE_OK) return "unknown";
     return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(patch);
+}
+
+std::string ShimLibrary::identity() const {
+    // The file the dynamic linker actually mapped (path_ may be a bare soname it resolved).
+    Dl_info info{};
+    std::string file = path_;
+    if (dladdr(reinterpret_cast<void*>(api_->get_version), &info) && info.dli_fname) file = info.dli_fname;
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return "libstipple " + version() + " (unreadable: " + file + ")";
+    uint64_t hash = 1469598103934665603ull;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            hash ^= uint8_t(buffer[i]);
+            hash *= 1099511628211ull;
+        }
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", (unsigned long long)hash);
+    return "libstipple " + version() + " " + hex;
 }
 
 std::string ShimLibrary::lastError() const {

@@ -24,6 +24,9 @@ public:
     const stipple_api& api() const { return *api_; }
     const std::string& path() const { return path_; }
     std::string version() const;
+    // "libstipple <version> <hash>": the version and an FNV-1a hash of the loaded file's bytes, so that a cache
+    // keyed on it notices a rebuilt library whose version string did not change.
+    std::string identity() const;
     // The shim's message for the calling thread's last failure.
     std::string lastError() const;
 

@@ -25,7 +25,8 @@ uint64_t fnv1a(const std::string& s) {
 } // namespace
 
 std::string referenceKey(const render::Scene& scene, const render::RenderOptions& o) {
-    std::string material = scene.contentHash() + "|" + render::rendererVersion() + "|" + std::to_string(o.width) +
+    std::string material = scene.contentHash() + "|" + render::rendererVersion() + "|" + render::shimIdentity(o.shim) +
+                           "|" + std::to_string(o.width) +
                            "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
                            std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " +
                            std::to_string(o.maxDepth) + "|halves";

@@ -19,6 +19,11 @@ public:
 // Version string of the renderer; part of every reference-cache key.
 const char* rendererVersion();
 
+// Identity of the sample-stream library that RenderOptions::shim = shimPath selects: its version and a hash of
+// the file's bytes, so a reference cache notices a rebuilt shim. Loads the library if needed; throws
+// std::runtime_error, as a render would, when none loads.
+std::string shimIdentity(const std::string& shimPath);
+
 // Scene-linear Rec.709 RGB image, row-major, top row first, 3 floats per pixel.
 struct Image {
     int width = 0;
