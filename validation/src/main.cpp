@@ -1,5 +1,6 @@
 // stipple-validate: runs a YAML matrix of scenes × patterns × spp × seeds through the renderer in-process,
 // measures RMS against a cached reference and render time, checks the matrix's claims and writes a report.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -103,6 +104,10 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
         else if (r.rendererVersion != merged.rendererVersion)
             throw std::runtime_error(dir + ": renderer version '" + r.rendererVersion + "' differs from '" +
                                      merged.rendererVersion + "' of the other shards");
+        for (size_t e = 0; e < r.errors.size(); ++e) {  // a scene a shard could not run stays reported
+            merged.errors.push_back(dir + ": " + r.errors[e]);
+            merged.skippedScenes.push_back(e < r.skippedScenes.size() ? r.skippedScenes[e] : std::string());
+        }
         for (const auto& s : r.scenes) {
             bool known = false;
             for (const auto& k : merged.scenes) known |= k.name == s.name;
@@ -125,12 +130,15 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
     }
     size_t missing = 0;
     std::string example;
-    for (const auto& s : m.scenes)
+    for (const auto& s : m.scenes) {
+        if (std::find(merged.skippedScenes.begin(), merged.skippedScenes.end(), s.name) != merged.skippedScenes.end())
+            continue;  // its rows are missing because it failed, which the merged run reports as an error
         for (const auto& p : m.patterns)
             for (uint32_t spp : m.spp)
                 for (uint64_t seed : m.seeds)
                     if (!seen.count({s.name, p, spp, seed}) && missing++ == 0)
                         example = s.name + " " + p + " " + std::to_string(spp) + " spp seed " + std::to_string(seed);
+    }
     if (missing)
         throw std::runtime_error("merge: " + std::to_string(missing) + " cell × seed rows of " + m.path +
                                  " are in none of the folders (e.g. " + example + "): did every shard finish?");

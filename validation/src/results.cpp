@@ -195,6 +195,11 @@ void writeResultsJson(const std::string& path, const Results& results, const std
           << ", \"reference_seconds\": " << jsonNumber(s.referenceSeconds)
           << ", \"noise_floor\": " << jsonNumber(s.noiseFloor) << "}";
     }
+    o << "\n  ],\n  \"skipped_scenes\": [";
+    for (size_t i = 0; i < results.errors.size(); ++i)
+        o << (i ? ",\n" : "\n") << "    {\"name\": "
+          << jsonString(i < results.skippedScenes.size() ? results.skippedScenes[i] : std::string())
+          << ", \"error\": " << jsonString(results.errors[i]) << "}";
     o << "\n  ],\n  \"rows\": [";
     for (size_t i = 0; i < results.rows.size(); ++i) {
         const auto& r = results.rows[i];
@@ -274,6 +279,10 @@ Results readResultsJson(const std::string& path) {
             i.referenceSeconds = number(s["reference_seconds"]);
             i.noiseFloor = number(s["noise_floor"]);
             r.scenes.push_back(i);
+        }
+        for (const auto& s : c["skipped_scenes"]) {  // absent in files of older versions
+            r.skippedScenes.push_back(s["name"].as<std::string>(""));
+            r.errors.push_back(s["error"].as<std::string>(""));
         }
         for (const auto& n : c["rows"]) {
             ResultRow row;

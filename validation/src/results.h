@@ -41,7 +41,8 @@ struct Results {
     std::string matrixName, rendererVersion;
     std::vector<SceneInfo> scenes;
     std::vector<ResultRow> rows;
-    std::vector<std::string> errors; // scenes that could not be loaded or rendered: the run goes on without them
+    std::vector<std::string> errors;        // scenes that could not be loaded or rendered: the run goes on without them
+    std::vector<std::string> skippedScenes; // their matrix names, in the same order
 };
 
 // Over the K seeds of one (scene, pattern, spp).

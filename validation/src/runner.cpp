@@ -172,6 +172,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             std::string what = ms.path + ": " + e.what();
             progress.note("ERROR: " + what + " (skipping scene " + ms.name + ")");
             results.errors.push_back(what);
+            results.skippedScenes.push_back(ms.name);
             std::erase_if(results.rows, [&](const ResultRow& r) { return r.scene == ms.name; });
         }
     }
