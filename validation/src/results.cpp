@@ -63,6 +63,10 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         }
         c.seeds = j - i;
         c.rms = meanInterval(rms);
+        std::vector<double> logRms;
+        for (double x : rms)
+            if (x > 0) logRms.push_back(std::log(x));
+        c.logRms = summarize(logRms);
         c.meanRmsMeasured = mean(rmsMeasured);
         c.meanMse = mean(mse);
         c.meanMseCorrected = mean(mseCorrected);

@@ -49,6 +49,28 @@ Interval meanInterval(const std::vector<double>& values, double confidence) {
     return r;
 }
 
+SampleSummary summarize(const std::vector<double>& values) {
+    return {mean(values), sampleVariance(values), values.size()};
+}
+
+Interval welchDifference(const SampleSummary& a, const SampleSummary& b, double confidence) {
+    Interval r;
+    r.mean = a.mean - b.mean;
+    r.count = a.count + b.count;
+    if (a.count < 2 || b.count < 2) {
+        r.halfWidth = std::numeric_limits<double>::quiet_NaN();
+        return r;
+    }
+    const double va = a.variance / double(a.count), vb = b.variance / double(b.count), se2 = va + vb;
+    if (!(se2 > 0)) {  // both samples constant: the difference is exact
+        r.halfWidth = 0;
+        return r;
+    }
+    const double dof = se2 * se2 / (va * va / double(a.count - 1) + vb * vb / double(b.count - 1));
+    r.halfWidth = studentTQuantile(0.5 + 0.5 * confidence, dof) * std::sqrt(se2);
+    return r;
+}
+
 LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y, double confidence) {
     if (x.size() != y.size()) throw std::invalid_argument("fitLine: x and y differ in length");
     LineFit f;

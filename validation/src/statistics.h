@@ -27,6 +27,18 @@ double studentTQuantile(double p, double dof);
 // Mean with the t-distribution interval at the given confidence (0.95: two-sided 95%).
 Interval meanInterval(const std::vector<double>& values, double confidence = 0.95);
 
+// A sample's mean, unbiased variance and size.
+struct SampleSummary {
+    double mean = 0;
+    double variance = 0;
+    size_t count = 0;
+};
+SampleSummary summarize(const std::vector<double>& values);
+
+// Welch's interval for mean(a) - mean(b): unequal variances, Welch-Satterthwaite degrees of freedom.
+// halfWidth is NaN when either sample has fewer than two values.
+Interval welchDifference(const SampleSummary& a, const SampleSummary& b, double confidence = 0.95);
+
 // Least-squares line y = intercept + slope x, with a t interval on the slope (n - 2 dof).
 struct LineFit {
     double slope = 0;

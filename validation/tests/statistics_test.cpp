@@ -33,6 +33,21 @@ BOOST_AUTO_TEST_CASE(separation_needs_disjoint_intervals) {
     BOOST_CHECK(!separatedBelow(c, a));
 }
 
+BOOST_AUTO_TEST_CASE(welch_interval_known_answer) {
+    // a = {1, 2, 3, 4}: mean 2.5, variance 5/3; b = {2, 4, 6, 8}: mean 5, variance 20/3. Standard errors squared
+    // 5/12 and 5/3; Welch-Satterthwaite dof = (25/12)^2 / ((5/12)^2 / 3 + (5/3)^2 / 3) = 4.41176...
+    const SampleSummary a = summarize({1, 2, 3, 4}), b = summarize({2, 4, 6, 8});
+    BOOST_CHECK_CLOSE(a.variance, 5.0 / 3.0, 1e-12);
+    const Interval d = welchDifference(a, b);
+    BOOST_CHECK_CLOSE(d.mean, -2.5, 1e-12);
+    const double dof = (625.0 / 144.0) / ((25.0 / 144.0 + 25.0 / 9.0) / 3.0);
+    BOOST_CHECK_CLOSE(dof, 4.4117647, 1e-5);
+    BOOST_CHECK_CLOSE(d.halfWidth, studentTQuantile(0.975, dof) * std::sqrt(25.0 / 12.0), 1e-9);
+    BOOST_CHECK(d.lo() < 0 && d.hi() > 0);  // 2.5 apart, but the samples are too spread to tell at 95%
+    BOOST_CHECK(std::isnan(welchDifference(summarize({1}), b).halfWidth));
+    BOOST_CHECK_EQUAL(welchDifference(summarize({1, 1}), summarize({2, 2})).halfWidth, 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(median_even_and_odd) {
     BOOST_CHECK_EQUAL(median({3, 1, 2}), 2.0);
     BOOST_CHECK_EQUAL(median({4, 1, 3, 2}), 2.5);
