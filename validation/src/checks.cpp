@@ -42,12 +42,18 @@ std::string rmsText(const CellAggregate& c) {
 // -1 when a's RMS is established below b's, +1 above, 0 undecided; `why` gets the figures behind it.
 // Per-seed RMS of a render is right-skewed (one seed meets a rare bright path), so the comparison is made on
 // log RMS: a < b when Welch's 95% interval of mean log RMS(a) - mean log RMS(b) lies below 0, i.e. the ratio
-// of geometric means is below 1 with 95% confidence. A cell with a seed of zero corrected RMS (no logarithm)
-// falls back to requiring the 95% intervals of mean RMS to separate.
+// of geometric means is below 1 with 95% confidence. A seed at the reference's noise floor has zero corrected
+// RMS and no logarithm; then both cells are compared on the measured RMS, which carries the same floor on both
+// sides and so can only pull the ratio towards 1 (conservative). Failing that, the 95% intervals of mean RMS
+// must be disjoint.
 int compareRms(const CellAggregate& a, const CellAggregate& b, std::string& why) {
-    if (a.logRms.count == a.seeds && b.logRms.count == b.seeds && a.seeds >= 2 && b.seeds >= 2) {
-        const Interval d = welchDifference(a.logRms, b.logRms);
-        why = fmt(" (geometric-mean ratio %.3g, 95%% %.3g-%.3g)", std::exp(d.mean), std::exp(d.lo()), std::exp(d.hi()));
+    auto complete = [](const CellAggregate& c, const SampleSummary& s) { return c.seeds >= 2 && s.count == c.seeds; };
+    const bool corrected = complete(a, a.logRms) && complete(b, b.logRms);
+    if (corrected || (complete(a, a.logRmsMeasured) && complete(b, b.logRmsMeasured))) {
+        const Interval d = corrected ? welchDifference(a.logRms, b.logRms)
+                                     : welchDifference(a.logRmsMeasured, b.logRmsMeasured);
+        why = fmt(" (geometric-mean ratio%s %.3g, 95%% %.3g-%.3g)", corrected ? "" : " of measured RMS, a seed at the floor",
+                  std::exp(d.mean), std::exp(d.lo()), std::exp(d.hi()));
         return d.hi() < 0 ? -1 : d.lo() > 0 ? 1 : 0;
     }
     why = " (mean RMS intervals)";

@@ -63,10 +63,13 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         }
         c.seeds = j - i;
         c.rms = meanInterval(rms);
-        std::vector<double> logRms;
+        std::vector<double> logRms, logRmsMeasured;
         for (double x : rms)
             if (x > 0) logRms.push_back(std::log(x));
+        for (double x : rmsMeasured)
+            if (x > 0) logRmsMeasured.push_back(std::log(x));
         c.logRms = summarize(logRms);
+        c.logRmsMeasured = summarize(logRmsMeasured);
         c.meanRmsMeasured = mean(rmsMeasured);
         c.meanMse = mean(mse);
         c.meanMseCorrected = mean(mseCorrected);

@@ -51,6 +51,7 @@ struct CellAggregate {
     uint32_t spp = 0;
     Interval rms;                    // of rmsCorrected, t interval, 95%
     SampleSummary logRms;            // of log(rmsCorrected) over the seeds where it is > 0
+    SampleSummary logRmsMeasured;    // of log(rms), before the floor correction, over the seeds where it is > 0
     double meanRmsMeasured = 0;      // before the floor correction
     double meanMse = 0, meanMseCorrected = 0;
     double medianRenderSeconds = 0, medianSamplerSeconds = 0;

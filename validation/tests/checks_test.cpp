@@ -125,9 +125,20 @@ BOOST_AUTO_TEST_CASE(ordering_compares_geometric_means_of_skewed_rms) {
     BOOST_CHECK(out[1].status == CheckStatus::NotSeparated);  // poisson = stratified
     BOOST_CHECK(out[2].status == CheckStatus::Fail);          // independent < stratified is reversed
 
-    // A seed with zero corrected RMS has no logarithm: the check falls back to the mean-RMS intervals.
+    // A seed at the reference's noise floor (zero corrected RMS, no logarithm): the measured RMS is compared
+    // instead. Measured RMS of 0.3 for every stratified seed against the independent ones still separates; with
+    // a measured zero as well, only the mean-RMS intervals are left.
     for (auto& r : rows)
-        if (r.pattern == "stratified" && r.seed == 1) r.rmsCorrected = 0;
+        if (r.pattern == "stratified") {
+            r.rms = 0.3;
+            if (r.seed == 1) r.rmsCorrected = 0;
+        }
+    cells = aggregate(rows);
+    out = evaluateChecks(f.matrix, rows, cells, fitSlopes(rows, f.matrix));
+    BOOST_CHECK(formatOutcome(out[0]).find("of measured RMS") != std::string::npos);
+    BOOST_CHECK(out[0].status == CheckStatus::Pass);
+    for (auto& r : rows)
+        if (r.pattern == "stratified" && r.seed == 1) r.rms = 0;
     cells = aggregate(rows);
     a = findCell(cells, "box", "stratified", 64);
     b = findCell(cells, "box", "independent", 64);
