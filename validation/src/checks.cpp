@@ -52,7 +52,7 @@ int compareRms(const CellAggregate& a, const CellAggregate& b, std::string& why)
     if (corrected || (complete(a, a.logRmsMeasured) && complete(b, b.logRmsMeasured))) {
         const Interval d = corrected ? welchDifference(a.logRms, b.logRms)
                                      : welchDifference(a.logRmsMeasured, b.logRmsMeasured);
-        why = fmt(" (geometric-mean ratio%s %.3g, 95%% %.3g-%.3g)", corrected ? "" : " of measured RMS, a seed at the floor",
+        why = fmt(" (%sgeometric-mean ratio %.3g, 95%% %.3g-%.3g)", corrected ? "" : "measured RMS, a seed at the floor: ",
                   std::exp(d.mean), std::exp(d.lo()), std::exp(d.hi()));
         return d.hi() < 0 ? -1 : d.lo() > 0 ? 1 : 0;
     }

@@ -135,7 +135,7 @@ BOOST_AUTO_TEST_CASE(ordering_compares_geometric_means_of_skewed_rms) {
         }
     cells = aggregate(rows);
     out = evaluateChecks(f.matrix, rows, cells, fitSlopes(rows, f.matrix));
-    BOOST_CHECK(formatOutcome(out[0]).find("of measured RMS") != std::string::npos);
+    BOOST_CHECK(formatOutcome(out[0]).find("measured RMS, a seed at the floor") != std::string::npos);
     BOOST_CHECK(out[0].status == CheckStatus::Pass);
     for (auto& r : rows)
         if (r.pattern == "stratified" && r.seed == 1) r.rms = 0;
