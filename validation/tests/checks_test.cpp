@@ -44,12 +44,11 @@ checks:
     ~Fixture() { fs::remove_all(dir); }
 };
 
-// independent: RMS = spp^-0.5 (slope −0.5); stratified: spp^-0.75; poisson: as stratified with the same spread,
-// so stratified vs poisson overlap. Seeds spread the RMS by ±2%. Times: independent 1 s, stratified 1 s,
-// poisson 1.02 s, independent at 64 spp takes 2 s for seed 4 (the slowest cell).
-std::vector<ResultRow> syntheticRows() {
+// Rows of the fixture's matrix (scene box; independent, stratified, poisson; 4, 16, 64 spp; 4 seeds) with the
+// given RMS per (pattern, spp, seed index) and 1 s render times.
+template <class Rms>
+std::vector<ResultRow> rowsWith(Rms rms) {
     std::vector<ResultRow> rows;
-    const double spread[4] = {-0.02, -0.01, 0.01, 0.02};
     for (const char* pattern : {"independent", "stratified", "poisson"})
         for (uint32_t spp : {4u, 16u, 64u})
             for (int s = 0; s < 4; ++s) {
@@ -58,13 +57,26 @@ std::vector<ResultRow> syntheticRows() {
                 r.pattern = pattern;
                 r.spp = spp;
                 r.seed = uint64_t(s + 1);
-                double exponent = std::string(pattern) == "independent" ? -0.5 : -0.75;
-                r.rmsCorrected = r.rms = std::pow(double(spp), exponent) * (1 + spread[s]);
+                r.rmsCorrected = r.rms = rms(std::string(pattern), spp, s);
                 r.mseCorrected = r.mse = r.rms * r.rms;
-                r.renderSeconds = std::string(pattern) == "poisson" ? 1.02 : 1.0;
-                if (std::string(pattern) == "independent" && spp == 64 && s == 3) r.renderSeconds = 2.0;
+                r.renderSeconds = 1.0;
                 rows.push_back(r);
             }
+    return rows;
+}
+
+// independent: RMS = spp^-0.5 (slope −0.5); stratified: spp^-0.75; poisson: as stratified with the same spread,
+// so stratified vs poisson overlap. Seeds spread the RMS by ±2%. Times: independent 1 s, stratified 1 s,
+// poisson 1.02 s, independent at 64 spp takes 2 s for seed 4 (the slowest cell).
+std::vector<ResultRow> syntheticRows() {
+    const double spread[4] = {-0.02, -0.01, 0.01, 0.02};
+    std::vector<ResultRow> rows = rowsWith([&](const std::string& pattern, uint32_t spp, int s) {
+        return std::pow(double(spp), pattern == "independent" ? -0.5 : -0.75) * (1 + spread[s]);
+    });
+    for (ResultRow& r : rows) {
+        if (r.pattern == "poisson") r.renderSeconds = 1.02;
+        if (r.pattern == "independent" && r.spp == 64 && r.seed == 4) r.renderSeconds = 2.0;
+    }
     return rows;
 }
 } // namespace
@@ -100,20 +112,9 @@ BOOST_AUTO_TEST_CASE(ordering_compares_geometric_means_of_skewed_rms) {
     // On log RMS Welch's interval separates them; equal samples still do not separate.
     Fixture f;
     const double independent[4] = {1.661, 0.854, 1.156, 0.843}, stratified[4] = {0.450, 0.252, 0.133, 0.386};
-    std::vector<ResultRow> rows;
-    for (const char* pattern : {"independent", "stratified", "poisson"})
-        for (uint32_t spp : {4u, 16u, 64u})
-            for (int s = 0; s < 4; ++s) {
-                ResultRow r;
-                r.scene = "box";
-                r.pattern = pattern;
-                r.spp = spp;
-                r.seed = uint64_t(s + 1);
-                r.rmsCorrected = r.rms = std::string(pattern) == "independent" ? independent[s] : stratified[s];
-                r.mseCorrected = r.mse = r.rms * r.rms;
-                r.renderSeconds = 1.0;
-                rows.push_back(r);
-            }
+    std::vector<ResultRow> rows = rowsWith([&](const std::string& pattern, uint32_t, int s) {
+        return pattern == "independent" ? independent[s] : stratified[s];
+    });
     sortRows(rows, f.matrix);
     auto cells = aggregate(rows);
     const CellAggregate *a = findCell(cells, "box", "stratified", 64), *b = findCell(cells, "box", "independent", 64);
