@@ -101,6 +101,11 @@ std::string ShimLibrary::version() const {
 }
 
 std::string ShimLibrary::identity() const {
+    std::call_once(identityOnce_, [this] { identity_ = hashIdentity(); });  // once: the loaded code does not change
+    return identity_;
+}
+
+std::string ShimLibrary::hashIdentity() const {
     // The file the dynamic linker actually mapped (path_ may be a bare soname it resolved).
     Dl_info info{};
     std::string file = path_;

@@ -5,6 +5,7 @@
 #include <stipple/stipple.h>
 
 #include <stdexcept>
+#include <mutex>
 #include <string>
 
 namespace stipple::render {
@@ -31,11 +32,14 @@ public:
     std::string lastError() const;
 
 private:
+    std::string hashIdentity() const;
     ShimLibrary(void* handle, const stipple_api* api, std::string path)
         : handle_(handle), api_(api), path_(std::move(path)) {}
     void* handle_ = nullptr;
     const stipple_api* api_ = nullptr;
     std::string path_;
+    mutable std::once_flag identityOnce_;
+    mutable std::string identity_;
 };
 
 } // namespace stipple::render

@@ -104,10 +104,7 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
         else if (r.rendererVersion != merged.rendererVersion)
             throw std::runtime_error(dir + ": renderer version '" + r.rendererVersion + "' differs from '" +
                                      merged.rendererVersion + "' of the other shards");
-        for (size_t e = 0; e < r.errors.size(); ++e) {  // a scene a shard could not run stays reported
-            merged.errors.push_back(dir + ": " + r.errors[e]);
-            merged.skippedScenes.push_back(e < r.skippedScenes.size() ? r.skippedScenes[e] : std::string());
-        }
+        for (const auto& k : r.skipped) merged.skipped.push_back({k.name, dir + ": " + k.error});  // stays reported
         for (const auto& s : r.scenes) {
             bool known = false;
             for (const auto& k : merged.scenes) known |= k.name == s.name;
@@ -131,7 +128,7 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
     size_t missing = 0;
     std::string example;
     for (const auto& s : m.scenes) {
-        if (std::find(merged.skippedScenes.begin(), merged.skippedScenes.end(), s.name) != merged.skippedScenes.end())
+        if (std::any_of(merged.skipped.begin(), merged.skipped.end(), [&](const SkippedScene& k) { return k.name == s.name; }))
             continue;  // its rows are missing because it failed, which the merged run reports as an error
         for (const auto& p : m.patterns)
             for (uint32_t spp : m.spp)
@@ -198,7 +195,7 @@ int main(int argc, char** argv) {
                   : shard ? "Shard " + std::to_string(args.shardIndex) + "/" + std::to_string(args.shardCount) +
                                 " only: checks are evaluated by --merge."
                           : "";
-        for (const auto& e : results.errors) in.note += " ERROR, scene skipped: " + e + ".";
+        for (const auto& k : results.skipped) in.note += " ERROR, scene skipped: " + k.error + ".";
         BaselineComparison baseline;
         if (!args.baseline.empty()) {
             Results base = readResultsJson(args.baseline);
@@ -235,8 +232,8 @@ int main(int argc, char** argv) {
         std::printf("\n%zu checks, %zu failed%s; %.1f s\nreport: %s\n", in.outcomes.size(), failures,
                     in.baseline ? (baseline.failed ? ", baseline failed" : ", baseline passed") : "", wall,
                     (fs::path(args.out) / "index.html").string().c_str());
-        for (const auto& e : results.errors) std::cerr << "stipple-validate: scene skipped: " << e << "\n";
-        if (!results.errors.empty()) return kExitError;
+        for (const auto& k : results.skipped) std::cerr << "stipple-validate: scene skipped: " << k.error << "\n";
+        if (!results.skipped.empty()) return kExitError;
         return failed ? kExitChecksFailed : 0;
     } catch (const std::exception& e) {
         std::cerr << "stipple-validate: " << e.what() << "\n";

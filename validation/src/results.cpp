@@ -63,13 +63,14 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         }
         c.seeds = j - i;
         c.rms = meanInterval(rms);
-        std::vector<double> logRms, logRmsMeasured;
-        for (double x : rms)
-            if (x > 0) logRms.push_back(std::log(x));
-        for (double x : rmsMeasured)
-            if (x > 0) logRmsMeasured.push_back(std::log(x));
-        c.logRms = summarize(logRms);
-        c.logRmsMeasured = summarize(logRmsMeasured);
+        auto logsOfPositive = [](const std::vector<double>& values) {
+            std::vector<double> logs;
+            for (double x : values)
+                if (x > 0) logs.push_back(std::log(x));
+            return summarize(logs);
+        };
+        c.logRms = logsOfPositive(rms);
+        c.logRmsMeasured = logsOfPositive(rmsMeasured);
         c.meanRmsMeasured = mean(rmsMeasured);
         c.meanMse = mean(mse);
         c.meanMseCorrected = mean(mseCorrected);
@@ -203,10 +204,9 @@ void writeResultsJson(const std::string& path, const Results& results, const std
           << ", \"noise_floor\": " << jsonNumber(s.noiseFloor) << "}";
     }
     o << "\n  ],\n  \"skipped_scenes\": [";
-    for (size_t i = 0; i < results.errors.size(); ++i)
-        o << (i ? ",\n" : "\n") << "    {\"name\": "
-          << jsonString(i < results.skippedScenes.size() ? results.skippedScenes[i] : std::string())
-          << ", \"error\": " << jsonString(results.errors[i]) << "}";
+    for (size_t i = 0; i < results.skipped.size(); ++i)
+        o << (i ? ",\n" : "\n") << "    {\"name\": " << jsonString(results.skipped[i].name)
+          << ", \"error\": " << jsonString(results.skipped[i].error) << "}";
     o << "\n  ],\n  \"rows\": [";
     for (size_t i = 0; i < results.rows.size(); ++i) {
         const auto& r = results.rows[i];
@@ -288,8 +288,7 @@ Results readResultsJson(const std::string& path) {
             r.scenes.push_back(i);
         }
         for (const auto& s : c["skipped_scenes"]) {  // absent in files of older versions
-            r.skippedScenes.push_back(s["name"].as<std::string>(""));
-            r.errors.push_back(s["error"].as<std::string>(""));
+            r.skipped.push_back({s["name"].as<std::string>(""), s["error"].as<std::string>("")});
         }
         for (const auto& n : c["rows"]) {
             ResultRow row;

@@ -37,12 +37,17 @@ struct SceneInfo {
     double noiseFloor = 0;                    // E[MSE contribution of the reference's noise]
 };
 
+// A scene a run could not load or render: its matrix name and the error, file:line first.
+struct SkippedScene {
+    std::string name, error;
+    bool operator==(const SkippedScene&) const = default;
+};
+
 struct Results {
     std::string matrixName, rendererVersion;
     std::vector<SceneInfo> scenes;
     std::vector<ResultRow> rows;
-    std::vector<std::string> errors;        // scenes that could not be loaded or rendered: the run goes on without them
-    std::vector<std::string> skippedScenes; // their matrix names, in the same order
+    std::vector<SkippedScene> skipped; // scenes that could not be loaded or rendered: the run goes on without them
 };
 
 // Over the K seeds of one (scene, pattern, spp).

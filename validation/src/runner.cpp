@@ -171,8 +171,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             progress.resume();
             std::string what = ms.path + ": " + e.what();
             progress.note("ERROR: " + what + " (skipping scene " + ms.name + ")");
-            results.errors.push_back(what);
-            results.skippedScenes.push_back(ms.name);
+            results.skipped.push_back({ms.name, what});
             std::erase_if(results.rows, [&](const ResultRow& r) { return r.scene == ms.name; });
         }
     }

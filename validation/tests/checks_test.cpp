@@ -160,8 +160,7 @@ BOOST_AUTO_TEST_CASE(results_json_round_trips_and_baseline_compares) {
     s.name = "box";
     s.noiseFloor = 1e-5;
     r.scenes.push_back(s);
-    r.skippedScenes = {"broken"};
-    r.errors = {"broken.yaml:3:1: key 'shapez': unknown key"};
+    r.skipped = {{"broken", "broken.yaml:3:1: key 'shapez': unknown key"}};
     auto cells = aggregate(r.rows);
     std::string path = (f.dir / "results.json").string();
     writeResultsJson(path, r, cells, fitSlopes(r.rows, f.matrix), "[]");
@@ -171,8 +170,7 @@ BOOST_AUTO_TEST_CASE(results_json_round_trips_and_baseline_compares) {
     BOOST_CHECK(std::isnan(back.rows[0].rms));
     BOOST_CHECK_EQUAL(back.rows[5].rmsCorrected, r.rows[5].rmsCorrected); // %.17g is exact
     BOOST_CHECK_EQUAL(back.scenes.at(0).noiseFloor, 1e-5);
-    BOOST_CHECK(back.skippedScenes == r.skippedScenes);
-    BOOST_CHECK(back.errors == r.errors);
+    BOOST_CHECK(back.skipped == r.skipped);
 
     // Same run: no regression. Worse RMS beyond the intervals, or slower beyond the factor: FAIL.
     BOOST_CHECK(!compareToBaseline(cells, aggregate(back.rows), 1.5).failed);
