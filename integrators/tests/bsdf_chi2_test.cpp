@@ -7,8 +7,8 @@
 #define BOOST_TEST_MODULE bsdf_chi2
 #include <boost/test/unit_test.hpp>
 
-#include "material.h"
-#include "pixel_sampler.h"
+#include "materials/material.h"
+#include "sampling/pixel_sampler.h"
 
 #include <boost/math/distributions/chi_squared.hpp>
 
