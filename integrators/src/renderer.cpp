@@ -3,6 +3,9 @@
 // pixel's samples depend only on (seed, pixel, sample index, dimension), so the image does not depend on the
 // thread count or tile order.
 #include <stipple/render/renderer.h>
+#include <stipple/render/content_hash.h>
+#include <stipple/render/progress_bar.h>
+#include <stipple/version.h>
 
 #include "integrators/integrator.h"
 #include "scene/render_scene.h"
@@ -30,9 +33,16 @@
 
 namespace stipple::render {
 
-const char* rendererVersion() { return "stipple-render 1.0.0"; }
+const char* rendererVersion() {
+    static const std::string version = std::string("stipple-render ") + STIPPLE_VERSION;
+    return version.c_str();
+}
+
+std::string rendererIdentity() { return std::string(rendererVersion()) + " sources " + rendererSourceHash(); }
 
 std::string shimIdentity(const std::string& shimPath) { return ShimLibrary::get(shimPath).identity(); }
+
+std::vector<std::string> patternNames(const std::string& shimPath) { return ShimLibrary::get(shimPath).patternNames(); }
 
 namespace {
 
@@ -47,20 +57,12 @@ void setFlushToZero() {
 }
 
 std::string hashFiles(const std::vector<std::string>& files) {
-    uint64_t h = 1469598103934665603ull; // FNV-1a 64
-    auto mix = [&](unsigned char c) {
-        h ^= c;
-        h *= 1099511628211ull;
-    };
+    ContentHash hash;
     for (const std::string& f : files) {
-        std::ifstream in(f, std::ios::binary);
-        std::istreambuf_iterator<char> it(in), end;
-        for (; it != end; ++it) mix(static_cast<unsigned char>(*it));
-        mix(0xff); // file separator
+        hash.addFile(f);
+        hash.add(static_cast<unsigned char>(0xff)); // file separator
     }
-    char buf[17];
-    std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(h));
-    return buf;
+    return hash.hex();
 }
 
 class ProgressBar {
@@ -73,8 +75,7 @@ public:
         int last = lastPct_.load();
         if (pct > last && lastPct_.compare_exchange_strong(last, pct)) {
             std::lock_guard<std::mutex> lock(mutex_);
-            int bar = pct / 2;
-            std::fprintf(stderr, "\r[%-50s] %3d%%", std::string(size_t(bar), '=').c_str(), pct);
+            std::fprintf(stderr, "\r\033[K%s %3d%%", progressBar(d, total_).c_str(), pct);
             if (d == total_) std::fprintf(stderr, "\n");
             std::fflush(stderr);
         }
@@ -104,13 +105,24 @@ public:
     uint64_t triangleCount() const override { return scene_.triangleCount(); }
 
     std::string describeLayout(const RenderOptions& options) const override {
-        Resolved r = resolve(options);
+        Resolved r = resolveSettings(options);
         Camera camera(scene_.description().camera, r.width, r.height);
         auto integrator = makeIntegrator(r.integrator, scene_, camera, r.settings);
         return declareLayout(camera, *integrator).describe();
     }
 
     RenderResult render(const RenderOptions& options) const override;
+
+    RenderOptions resolve(const RenderOptions& options) const override {
+        const Resolved r = resolveSettings(options);
+        RenderOptions o = options;
+        o.integrator = r.integrator;
+        o.maxDepth = r.settings.maxDepth;
+        o.width = r.width;
+        o.height = r.height;
+        o.spp = r.spp;
+        return o;
+    }
 
 private:
     struct Resolved {
@@ -119,7 +131,7 @@ private:
         int width, height;
         uint32_t spp;
     };
-    Resolved resolve(const RenderOptions& o) const {
+    Resolved resolveSettings(const RenderOptions& o) const {
         const RenderSettings& s = scene_.description().settings;
         Resolved r;
         r.integrator = o.integrator.empty() ? s.integrator : o.integrator;
@@ -144,7 +156,7 @@ private:
 };
 
 RenderResult SceneImpl::render(const RenderOptions& options) const {
-    Resolved r = resolve(options);
+    Resolved r = resolveSettings(options);
     Camera camera(scene_.description().camera, r.width, r.height);
     auto integrator = makeIntegrator(r.integrator, scene_, camera, r.settings);
     SampleLayout layout = declareLayout(camera, *integrator);
@@ -224,6 +236,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
     }
     result.samplerSeconds = sumSampler / double(threads);
     result.layout = layout.describe();
+    result.settings = resolve(options);
     return result;
 }
 

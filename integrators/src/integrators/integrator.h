@@ -1,10 +1,10 @@
-// The integrator interface and registry. The render loop (render_loop.cpp) declares "pixel" (and "lens" for a
-// thin-lens camera), asks the integrator to declare the rest, creates the shim sampler, then calls Li once per
-// camera sample from the thread that owns the pixel's tile.
+// The integrator interface. The render loop (renderer.cpp) declares "pixel" (and "lens" for a thin-lens camera),
+// asks the integrator to declare the rest, creates the shim sampler, then calls Li once per camera sample from
+// the thread that owns the pixel's tile.
 //
-// Adding an integrator: implement Integrator in src/<name>_integrator.cpp, declare its factory in
-// integrator_registry.h and list it in makeIntegrator (integrator_registry.cpp). BDPT's factory is compiled in
-// when a src/*bdpt*.cpp file exists (CMake defines STIPPLE_HAVE_BDPT).
+// Adding an integrator: implement Integrator in src/integrators/<name>_integrator.cpp, list the file in
+// integrators/CMakeLists.txt, declare its factory in integrator_registry.h and add it to the table in
+// integrator_registry.cpp.
 #pragma once
 
 #include "camera/camera.h"

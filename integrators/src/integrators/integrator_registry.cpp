@@ -1,27 +1,60 @@
 #include "integrators/integrator_registry.h"
 
+#include <stipple/render/renderer.h>
+
 #include <stdexcept>
 
 namespace stipple::render {
 
+namespace {
+
+using Factory = std::unique_ptr<Integrator> (*)(const RenderScene&, const Camera&, const IntegratorSettings&,
+                                                const std::string& name);
+
+struct Entry {
+    const char* name;
+    Factory make;
+};
+
+// The one list of integrators: names for help texts and validation come from here.
+const Entry kIntegrators[] = {
+    {"path", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
+         return makePathIntegrator(s, o);
+     }},
+    {"direct", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
+         return makeDirectIntegrator(s, o, DirectStrategy::Mis);
+     }},
+    {"direct-light", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
+         return makeDirectIntegrator(s, o, DirectStrategy::LightOnly);
+     }},
+    {"direct-bsdf", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
+         return makeDirectIntegrator(s, o, DirectStrategy::BsdfOnly);
+     }},
+    {"bdpt", makeBdptIntegrator},
+};
+
+// "bdpt:..." selects BDPT's debug variants (bdpt_integrator.h).
+bool isBdptVariant(const std::string& name) { return name.rfind("bdpt:", 0) == 0; }
+
+} // namespace
+
+std::vector<std::string> integratorNames() {
+    std::vector<std::string> names;
+    for (const Entry& e : kIntegrators) names.push_back(e.name);
+    return names;
+}
+
 std::string knownIntegrators() {
-#ifdef STIPPLE_HAVE_BDPT
-    return "path, direct, direct-light, direct-bsdf, bdpt (debug: bdpt:s=S,t=T[,mis], bdpt:depth=D)";
-#else
-    return "path, direct, direct-light, direct-bsdf";
-#endif
+    std::string list;
+    for (const Entry& e : kIntegrators) list += (list.empty() ? "" : ", ") + std::string(e.name);
+    return list + " (debug: bdpt:s=S,t=T[,mis], bdpt:depth=D)";
 }
 
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const RenderScene& scene, const Camera& camera,
                                            const IntegratorSettings& settings) {
-    (void)camera;
-    if (name == "path") return makePathIntegrator(scene, settings);
-    if (name == "direct") return makeDirectIntegrator(scene, settings, DirectStrategy::Mis);
-    if (name == "direct-light") return makeDirectIntegrator(scene, settings, DirectStrategy::LightOnly);
-    if (name == "direct-bsdf") return makeDirectIntegrator(scene, settings, DirectStrategy::BsdfOnly);
-#ifdef STIPPLE_HAVE_BDPT
-    if (name == "bdpt" || name.rfind("bdpt:", 0) == 0) return makeBdptIntegrator(scene, camera, settings, name);
-#endif
+    if (isBdptVariant(name)) return makeBdptIntegrator(scene, camera, settings, name);
+    for (const Entry& e : kIntegrators)
+        if (name == e.name) return e.make(scene, camera, settings, name);
     throw std::invalid_argument("unknown integrator '" + name + "'; expected one of " + knownIntegrators());
 }
 

@@ -11,8 +11,7 @@ enum class DirectStrategy { Mis, LightOnly, BsdfOnly };
 std::unique_ptr<Integrator> makeDirectIntegrator(const RenderScene& scene, const IntegratorSettings& settings,
                                                  DirectStrategy strategy);
 
-// Implemented in src/bdpt_integrator.cpp (issue 4) when present. `name` is "bdpt" or a debug variant
-// "bdpt:..." (bdpt_integrator.h).
+// `name` is "bdpt" or a debug variant "bdpt:..." (integrators/bdpt/bdpt_integrator.h).
 std::unique_ptr<Integrator> makeBdptIntegrator(const RenderScene& scene, const Camera& camera,
                                                const IntegratorSettings& settings, const std::string& name);
 

@@ -9,9 +9,11 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     : shim_(shim), spp_(spp), layout_(layout) {
     const stipple_api& api = shim.api();
     uint32_t patternId = 0;
-    if (api.pattern_from_name(pattern.c_str(), &patternId) != STIPPLE_OK)
-        throw ShimError("unknown pattern '" + pattern + "' (" + shim.lastError() +
-                        "); expected independent, stratified, poisson or poisson-seed");
+    if (api.pattern_from_name(pattern.c_str(), &patternId) != STIPPLE_OK) {
+        std::string known;
+        for (const std::string& name : shim.patternNames()) known += (known.empty() ? "" : ", ") + name;
+        throw ShimError("unknown pattern '" + pattern + "' (" + shim.lastError() + "); expected one of " + known);
+    }
     std::vector<stipple_dimension_desc> dims;
     for (const Dimension& d : layout.dimensions()) {
         stipple_dimension_desc desc{};

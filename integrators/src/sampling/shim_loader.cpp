@@ -1,5 +1,7 @@
 #include "sampling/shim_loader.h"
 
+#include <stipple/render/content_hash.h>
+
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -110,19 +112,20 @@ std::string ShimLibrary::hashIdentity() const {
     Dl_info info{};
     std::string file = path_;
     if (dladdr(reinterpret_cast<void*>(api_->get_version), &info) && info.dli_fname) file = info.dli_fname;
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return "libstipple " + version() + " (unreadable: " + file + ")";
-    uint64_t hash = 1469598103934665603ull;
-    char buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-        for (std::streamsize i = 0; i < in.gcount(); ++i) {
-            hash ^= uint8_t(buffer[i]);
-            hash *= 1099511628211ull;
-        }
-    }
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", (unsigned long long)hash);
+    ContentHash hash;
+    if (!hash.addFile(file)) return "libstipple " + version() + " (unreadable: " + file + ")";
+    const std::string hex = hash.hex();
     return "libstipple " + version() + " " + hex;
+}
+
+std::vector<std::string> ShimLibrary::patternNames() const {
+    std::vector<std::string> names;
+    for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p) {
+        const char* name = nullptr;
+        if (api_->pattern_name(p, &name) != STIPPLE_OK || !name) break; // an older library serves fewer
+        names.emplace_back(name);
+    }
+    return names;
 }
 
 std::string ShimLibrary::lastError() const {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace stipple::render {
 
@@ -28,6 +29,8 @@ public:
     // "libstipple <version> <hash>": the version and an FNV-1a hash of the loaded file's bytes, so that a cache
     // keyed on it notices a rebuilt library whose version string did not change.
     std::string identity() const;
+    // The names of the patterns this library serves, in pattern-id order (stipple_pattern_name).
+    std::vector<std::string> patternNames() const;
     // The shim's message for the calling thread's last failure.
     std::string lastError() const;
 

@@ -3,7 +3,7 @@
 #include "scene/shape_builders.h"
 #include <stipple/render/renderer.h>
 
-#include <yaml-cpp/yaml.h>
+#include <stipple/yaml/strict_yaml.h>
 
 #include <filesystem>
 #include <map>
@@ -23,11 +23,7 @@ public:
 
 private:
     // ---- error helpers ---------------------------------------------------------------------------------------
-    std::string where(const YAML::Node& n) const {
-        const YAML::Mark m = n.Mark();
-        if (m.line < 0) return file_;
-        return file_ + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
-    }
+    std::string where(const YAML::Node& n) const { return yaml::StrictYaml(file_).where(n); }
     static std::string show(const YAML::Node& n) {
         if (!n || n.IsNull()) return "nothing";
         if (n.IsScalar()) return "'" + n.Scalar() + "'";
@@ -41,15 +37,11 @@ private:
     [[noreturn]] void failMsg(const YAML::Node& n, const std::string& key, const std::string& msg) const {
         throw SceneError(where(n) + ": key '" + key + "': " + msg);
     }
-    void checkKeys(const YAML::Node& map, const std::string& ctx, const std::set<std::string>& allowed) const {
-        for (auto it = map.begin(); it != map.end(); ++it) {
-            const std::string k = it->first.Scalar();
-            if (!allowed.count(k)) {
-                std::string list;
-                for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-                throw SceneError(where(it->first) + ": key '" + k + "': unknown key in " + ctx + "; expected one of " +
-                                 list);
-            }
+    void checkKeys(const YAML::Node& map, const std::string& ctx, const std::vector<std::string>& allowed) const {
+        try {
+            yaml::StrictYaml(file_).onlyKeys(map, allowed, ctx);
+        } catch (const yaml::Error& e) {
+            throw SceneError(e.what());
         }
     }
     YAML::Node require(const YAML::Node& map, const std::string& key, const std::string& ctx) const {
@@ -61,17 +53,9 @@ private:
     // ---- typed readers ---------------------------------------------------------------------------------------
     double number(const YAML::Node& n, const std::string& key) const {
         if (!n.IsScalar()) fail(n, key, "a number");
-        try {
-            size_t used = 0;
-            const std::string& s = n.Scalar();
-            double v = std::stod(s, &used);
-            if (used != s.size() || !std::isfinite(v)) fail(n, key, "a finite number");
-            return v;
-        } catch (const SceneError&) {
-            throw;
-        } catch (const std::exception&) {
-            fail(n, key, "a number");
-        }
+        double v = 0;
+        if (!yaml::StrictYaml::parseNumber(n, v)) fail(n, key, "a finite number");
+        return v;
     }
     float numberIn(const YAML::Node& n, const std::string& key, double lo, double hi, const std::string& range) const {
         double v = number(n, key);
@@ -79,16 +63,8 @@ private:
         return float(v);
     }
     long long integer(const YAML::Node& n, const std::string& key, long long lo, long long hi) const {
-        if (!n.IsScalar()) fail(n, key, "an integer");
-        const std::string& s = n.Scalar();
         long long v = 0;
-        try {
-            size_t used = 0;
-            v = std::stoll(s, &used);
-            if (used != s.size()) throw std::invalid_argument(s);
-        } catch (const std::exception&) {
-            fail(n, key, "an integer");
-        }
+        if (!yaml::StrictYaml::parseInteger(n, v)) fail(n, key, "an integer");
         if (v < lo || v > hi)
             fail(n, key, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return v;
@@ -142,6 +118,12 @@ private:
     void parseObjects(const YAML::Node& n);
     void parseShapeList(const YAML::Node& list, ShapeGroup& group, bool inObject, const std::string& listKey);
     void parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject);
+    void allowShapeKeys(const YAML::Node& n, const std::string& ctx, std::initializer_list<const char*> keys) const;
+    void parseInstance(const YAML::Node& n, const std::string& ctx, const std::string& origin);
+    TriangleMesh parseMeshGeometry(const YAML::Node& n, const std::string& type, const std::string& ctx,
+                                   bool& parallelogramCandidate);
+    void addMesh(TriangleMesh tm, const Transform& xf, int material, const Emission& emission,
+                 const std::string& origin, bool parallelogramCandidate, ShapeGroup& group);
     Transform parseTransform(const YAML::Node& n) const;
     void include(const YAML::Node& n);
     std::string resolve(const std::string& rel) const {
@@ -165,14 +147,11 @@ YAML::Node Loader::loadYaml(const std::string& path, const YAML::Node* from, con
         throw SceneError(path + ": cannot open scene file");
     }
     try {
-        YAML::Node root = YAML::LoadFile(path);
+        YAML::Node root = yaml::StrictYaml(path).load();
         desc_.files.push_back(path);
         return root;
-    } catch (const YAML::ParserException& e) {
-        throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                         ": YAML syntax error: " + e.msg);
-    } catch (const YAML::Exception& e) {
-        throw SceneError(path + ": cannot read YAML: " + e.msg);
+    } catch (const yaml::Error& e) {
+        throw SceneError(e.what());
     }
 }
 
@@ -363,24 +342,10 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
     }
     if (type == "instance") {
         if (inObject) failMsg(n["type"], "type", "instances cannot be nested inside objects (one instance level)");
-        checkKeys(n, ctx, {"type", "object", "transform"});
-        std::string obj = string(require(n, "object", ctx), "object");
-        auto it = objectIndex_.find(obj);
-        if (it == objectIndex_.end()) failMsg(n["object"], "object", "no object named '" + obj + "' is defined above");
-        InstanceShape inst;
-        inst.object = it->second;
-        inst.objectToWorld = n["transform"] ? parseTransform(n["transform"]) : Transform();
-        inst.origin = origin;
-        desc_.instances.push_back(inst);
+        parseInstance(n, ctx, origin);
         return;
     }
 
-    std::set<std::string> common{"type", "material", "emission", "two_sided", "transform"};
-    auto allow = [&](std::initializer_list<const char*> keys) {
-        std::set<std::string> a = common;
-        for (const char* k : keys) a.insert(k);
-        checkKeys(n, ctx, a);
-    };
     std::string matName = string(require(n, "material", ctx), "material");
     auto mit = materialIndex_.find(matName);
     if (mit == materialIndex_.end()) failMsg(n["material"], "material", "no material named '" + matName + "'");
@@ -396,7 +361,7 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
     TriangleMesh tm;
     bool parallelogramCandidate = false;
     if (type == "sphere") {
-        allow({"center", "radius"});
+        allowShapeKeys(n, ctx, {"center", "radius"});
         Vec3 c = vec3(require(n, "center", ctx), "center");
         float r = numberIn(require(n, "radius", ctx), "radius", 1e-30, 1e30, "> 0");
         float scale = 1;
@@ -408,8 +373,36 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
         // An ellipsoid: tessellate the unit sphere, then scale, place and transform it.
         tm = makeSphereMesh(48, 96);
         for (Vec3& p : tm.positions) p = c + p * r;
-    } else if (type == "quad") {
-        allow({"vertices"});
+    } else {
+        tm = parseMeshGeometry(n, type, ctx, parallelogramCandidate);
+    }
+    addMesh(std::move(tm), xf, mit->second, emission, origin, parallelogramCandidate, group);
+}
+
+void Loader::allowShapeKeys(const YAML::Node& n, const std::string& ctx, std::initializer_list<const char*> keys) const {
+    std::vector<std::string> allowed{"type", "material", "emission", "two_sided", "transform"};
+    allowed.insert(allowed.end(), keys.begin(), keys.end());
+    checkKeys(n, ctx, allowed);
+}
+
+void Loader::parseInstance(const YAML::Node& n, const std::string& ctx, const std::string& origin) {
+    checkKeys(n, ctx, {"type", "object", "transform"});
+    std::string obj = string(require(n, "object", ctx), "object");
+    auto it = objectIndex_.find(obj);
+    if (it == objectIndex_.end()) failMsg(n["object"], "object", "no object named '" + obj + "' is defined above");
+    InstanceShape inst;
+    inst.object = it->second;
+    inst.objectToWorld = n["transform"] ? parseTransform(n["transform"]) : Transform();
+    inst.origin = origin;
+    desc_.instances.push_back(inst);
+}
+
+// The triangles of a quad, mesh, box, cylinder or lathe, in object space.
+TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& type, const std::string& ctx,
+                                       bool& parallelogramCandidate) {
+    TriangleMesh tm;
+    if (type == "quad") {
+        allowShapeKeys(n, ctx, {"vertices"});
         YAML::Node v = require(n, "vertices", ctx);
         if (!v.IsSequence() || v.size() != 4) fail(v, "vertices", "a list of 4 points");
         Vec3 p[4];
@@ -418,7 +411,7 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
         if (lengthSquared(cross(p[1] - p[0], p[2] - p[0])) == 0) fail(v, "vertices", "a non-degenerate quad");
         parallelogramCandidate = true;
     } else if (type == "mesh") {
-        allow({"vertices", "indices", "file"});
+        allowShapeKeys(n, ctx, {"vertices", "indices", "file"});
         if (n["file"]) {
             if (n["vertices"] || n["indices"]) failMsg(n["file"], "file", "give either file or vertices+indices, not both");
             std::string path = resolve(string(n["file"], "file"));
@@ -438,12 +431,12 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
                 tm.indices.push_back(uint32_t(integer(i, "indices", 0, (long long)tm.positions.size() - 1)));
         }
     } else if (type == "box") {
-        allow({"min", "max"});
+        allowShapeKeys(n, ctx, {"min", "max"});
         Vec3 lo = vec3(require(n, "min", ctx), "min"), hi = vec3(require(n, "max", ctx), "max");
         if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) fail(n["max"], "max", "max > min on every axis");
         tm = makeBox(lo, hi);
     } else if (type == "cylinder") {
-        allow({"base", "axis", "height", "radius", "segments", "caps"});
+        allowShapeKeys(n, ctx, {"base", "axis", "height", "radius", "segments", "caps"});
         Vec3 base = vec3(require(n, "base", ctx), "base");
         Vec3 axis = n["axis"] ? vec3(n["axis"], "axis") : Vec3(0, 1, 0);
         if (lengthSquared(axis) == 0) fail(n["axis"], "axis", "a non-zero direction");
@@ -453,7 +446,7 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
         bool caps = n["caps"] ? boolean(n["caps"], "caps") : true;
         tm = makeCylinder(base, axis, h, r, seg, caps);
     } else if (type == "lathe") {
-        allow({"profile", "segments"});
+        allowShapeKeys(n, ctx, {"profile", "segments"});
         YAML::Node prof = require(n, "profile", ctx);
         if (!prof.IsSequence() || prof.size() < 2) fail(prof, "profile", "a list of at least 2 [radius, height] pairs");
         std::vector<std::pair<float, float>> pts;
@@ -465,6 +458,12 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
         tm = makeLathe(pts, seg);
         if (tm.indices.empty()) fail(prof, "profile", "a profile that sweeps a surface (some radius > 0)");
     }
+    return tm;
+}
+
+// Places the mesh in the world and adds it to the group.
+void Loader::addMesh(TriangleMesh tm, const Transform& xf, int material, const Emission& emission,
+                     const std::string& origin, bool parallelogramCandidate, ShapeGroup& group) {
     if (!xf.isIdentity())
         for (Vec3& p : tm.positions) p = xf.point(p);
     if (xf.determinant() < 0) // a mirroring transform flips winding: restore the front side
@@ -472,7 +471,7 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
     MeshShape mesh;
     mesh.positions = std::move(tm.positions);
     mesh.indices = std::move(tm.indices);
-    mesh.material = mit->second;
+    mesh.material = material;
     mesh.emission = emission;
     mesh.origin = origin;
     if (parallelogramCandidate) {

@@ -1,16 +1,21 @@
-// Replays the scene-loader fuzzer's seed corpus and every input that once crashed it (integrators/fuzz/corpus,
-// integrators/fuzz/regressions) through the same LLVMFuzzerTestOneInput, built by gcc without libFuzzer.
-// A broken expectation traps, which fails this test.
-#define BOOST_TEST_MODULE stiff_fuzz_replay
+// Replays a libFuzzer harness's seed corpus and every input that once crashed it (<fuzz dir>/corpus and
+// <fuzz dir>/regressions) through the same LLVMFuzzerTestOneInput, built by gcc without libFuzzer. A broken
+// expectation in the harness traps, which fails this test. STIPPLE_FUZZ_DIR names the harness's folder.
+#define BOOST_TEST_MODULE fuzz_replay
 #include <boost/test/unit_test.hpp>
 
-#include "../fuzz/scene_fuzzer.cpp"
-
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <vector>
 
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
+
 BOOST_AUTO_TEST_CASE(replay_corpus_and_regressions) {
-    const fs::path fuzzDir = fs::path(__FILE__).parent_path().parent_path() / "fuzz";
+    namespace fs = std::filesystem;
+    const fs::path fuzzDir = STIPPLE_FUZZ_DIR;
     size_t files = 0;
     for (const char* sub : {"corpus", "regressions"}) {
         BOOST_REQUIRE_MESSAGE(fs::is_directory(fuzzDir / sub), "missing " << (fuzzDir / sub).string());
