@@ -65,7 +65,8 @@ struct Parser {
             return node.Scalar();
         } else if constexpr (std::is_floating_point_v<T>) {
             double v = 0;
-            if (!yaml::StrictYaml::parseNumber(node, v)) fail(node, "cannot read " + what + " from '" + node.Scalar() + "'");
+            if (yaml::StrictYaml::parseNumber(node, v) != yaml::StrictYaml::Number::Ok)
+                fail(node, "cannot read " + what + " from '" + node.Scalar() + "'");
             return T(v);
         } else {
             long long v = 0;

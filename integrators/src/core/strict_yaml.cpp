@@ -66,16 +66,16 @@ void StrictYaml::onlyKeys(const YAML::Node& map, const std::vector<std::string>&
     }
 }
 
-bool StrictYaml::parseNumber(const YAML::Node& node, double& out) {
-    if (!node.IsScalar()) return false;
+StrictYaml::Number StrictYaml::parseNumber(const YAML::Node& node, double& out) {
+    if (!node.IsScalar()) return Number::NotANumber;
     const std::string& s = node.Scalar();
-    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
-    errno = 0;
+    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return Number::NotANumber;
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || !std::isfinite(v)) return false;
+    if (end != s.c_str() + s.size()) return Number::NotANumber;
+    if (!std::isfinite(v)) return Number::NotFinite;
     out = v;
-    return true;
+    return Number::Ok;
 }
 
 bool StrictYaml::parseInteger(const YAML::Node& node, long long& out) {

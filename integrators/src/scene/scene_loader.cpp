@@ -54,8 +54,12 @@ private:
     double number(const YAML::Node& n, const std::string& key) const {
         if (!n.IsScalar()) fail(n, key, "a number");
         double v = 0;
-        if (!yaml::StrictYaml::parseNumber(n, v)) fail(n, key, "a finite number");
-        return v;
+        switch (yaml::StrictYaml::parseNumber(n, v)) {
+        case yaml::StrictYaml::Number::Ok: return v;
+        case yaml::StrictYaml::Number::NotFinite: fail(n, key, "a finite number");
+        case yaml::StrictYaml::Number::NotANumber: break;
+        }
+        fail(n, key, "a number");
     }
     float numberIn(const YAML::Node& n, const std::string& key, double lo, double hi, const std::string& range) const {
         double v = number(n, key);

@@ -35,8 +35,9 @@ public:
     void onlyKeys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& context) const;
 
     // The one number parser: the whole scalar must be a finite number (no trailing text, no nan/inf).
-    // Returns false (leaving `out` alone) when it is not.
-    static bool parseNumber(const YAML::Node& node, double& out);
+    // Sets `out` only when it returns Number::Ok.
+    enum class Number { Ok, NotANumber, NotFinite };
+    static Number parseNumber(const YAML::Node& node, double& out);
     // A whole-scalar integer in [lo, hi]; false otherwise.
     static bool parseInteger(const YAML::Node& node, long long& out);
 
