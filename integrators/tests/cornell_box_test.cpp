@@ -65,6 +65,27 @@ BOOST_AUTO_TEST_CASE(renders_and_writes) {
     BOOST_TEST(pngBack.width == 48);
 }
 
+BOOST_AUTO_TEST_CASE(settings_are_resolved_once) {
+    // Every "scene default" is filled in by Scene::resolve, and a render returns what it used.
+    auto scene = Scene::load(scenePath("cornell-box.yaml"));
+    RenderOptions o;
+    const RenderOptions r = scene->resolve(o);
+    BOOST_TEST(r.integrator == "path");
+    BOOST_TEST(r.maxDepth == 8);
+    BOOST_TEST(r.width == 256);
+    BOOST_TEST(r.height == 256);
+    BOOST_TEST(r.spp == 64u);
+    o.width = 8;
+    o.height = 4;
+    o.spp = 2;
+    o.maxDepth = 3;
+    const RenderResult result = scene->render(o);
+    BOOST_TEST(result.settings.maxDepth == 3);
+    BOOST_TEST(result.settings.width == 8);
+    BOOST_TEST(result.settings.spp == 2u);
+    BOOST_TEST(result.settings.integrator == "path");
+}
+
 BOOST_AUTO_TEST_CASE(exr_metadata_vocabulary) {
     // Keys are written once under "stipple:" (never twice), with the standard Software and chromaticities.
     Image im;
