@@ -1,5 +1,7 @@
 #include "mesh.h"
 
+#include <stipple/render/temporary_path.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -7,7 +9,6 @@
 #include <numbers>
 #include <stdexcept>
 
-#include <unistd.h>
 
 namespace stipple::citygen {
 
@@ -112,7 +113,7 @@ void Mesh::writePly(const std::string& path) const {
         out.push_back(char(3));
         for (int k = 0; k < 3; ++k) putU32(out, indices_[i + k]);
     }
-    std::string tmp = path + ".tmp" + std::to_string(::getpid()); // unique: two build trees may regenerate at once
+    const std::string tmp = stipple::render::temporaryPathFor(path); // two build trees may regenerate at once
     {
         std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
         if (!f) throw std::runtime_error("cannot write '" + tmp + "'");

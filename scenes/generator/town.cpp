@@ -1,5 +1,7 @@
 #include "town.h"
 
+#include <stipple/render/temporary_path.h>
+
 #include "building.h"
 #include "details.h"
 #include "rng.h"
@@ -14,7 +16,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <unistd.h>
 #include <vector>
 
 namespace stipple::citygen {
@@ -99,7 +100,7 @@ public:
             << objects_.str() << "shapes:\n"
             << shapes_.str();
         std::string path = (std::filesystem::path(outDir_) / (name_ + ".yaml")).string();
-        std::string tmp = path + ".tmp" + std::to_string(::getpid()); // unique: two build trees may regenerate at once
+        const std::string tmp = stipple::render::temporaryPathFor(path); // two build trees may regenerate at once
         {
             std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
             if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
