@@ -98,6 +98,7 @@ public:
     int defaultWidth() const override { return scene_.description().settings.width; }
     int defaultHeight() const override { return scene_.description().settings.height; }
     uint32_t defaultSpp() const override { return scene_.description().settings.spp; }
+    int defaultMaxDepth() const override { return scene_.description().settings.maxDepth; }
     std::string contentHash() const override { return hash_; }
     double loadSeconds() const override { return loadSeconds_; }
     double buildSeconds() const override { return scene_.buildSeconds(); }

@@ -17,6 +17,7 @@
 #include "report.h"
 #include "results.h"
 #include "runner.h"
+#include "shard_fingerprint.h"
 
 using namespace stipple::validation;
 namespace fs = std::filesystem;
@@ -95,12 +96,15 @@ Args parseArgs(int argc, char** argv) {
 
 // Combines the results.json of shard folders; every cell × seed of the matrix must be there exactly once.
 Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const std::string& out) {
+    // Shards of different matrices or builds would average renders that cannot be compared: refuse them first.
+    checkShardFingerprints(m, dirs);
     Results merged;
     merged.matrixName = m.name;
     std::set<std::tuple<std::string, std::string, uint32_t, uint64_t>> seen;
     for (const auto& dir : dirs) {
         Results r = readResultsJson((fs::path(dir) / "results.json").string());
         if (merged.rendererVersion.empty()) merged.rendererVersion = r.rendererVersion;
+        if (merged.fingerprint.empty()) merged.fingerprint = r.fingerprint;
         else if (r.rendererVersion != merged.rendererVersion)
             throw std::runtime_error(dir + ": renderer version '" + r.rendererVersion + "' differs from '" +
                                      merged.rendererVersion + "' of the other shards");

@@ -191,6 +191,7 @@ void writeResultsJson(const std::string& path, const Results& results, const std
     o << "{\n  \"format\": \"stipple-validate results 1\",\n";
     o << "  \"matrix\": " << jsonString(results.matrixName) << ",\n";
     o << "  \"renderer_version\": " << jsonString(results.rendererVersion) << ",\n";
+  if (!results.fingerprint.empty()) o << "  \"fingerprint\": " << fingerprintJson(results.fingerprint) << ",\n";
     o << "  \"scenes\": [";
     for (size_t i = 0; i < results.scenes.size(); ++i) {
         const auto& s = results.scenes[i];
@@ -269,6 +270,7 @@ Results readResultsJson(const std::string& path) {
             throw std::runtime_error(path + ": not a stipple-validate results.json (no format \"stipple-validate results 1\")");
         r.matrixName = c["matrix"].as<std::string>("");
         r.rendererVersion = c["renderer_version"].as<std::string>("");
+        r.fingerprint = readFingerprint(path);
         for (const auto& s : c["scenes"]) {
             SceneInfo i;
             i.name = s["name"].as<std::string>();

@@ -68,6 +68,7 @@ public:
     virtual int defaultWidth() const = 0;
     virtual int defaultHeight() const = 0;
     virtual uint32_t defaultSpp() const = 0;
+    virtual int defaultMaxDepth() const = 0;
     virtual std::string contentHash() const = 0; // hash of the file and everything it includes
     virtual double loadSeconds() const = 0;      // parsing + geometry generation
     virtual double buildSeconds() const = 0;     // Embree BVH build
