@@ -17,6 +17,7 @@ packages=(
   clang libclang-rt-14-dev
   slurm-wlm slurmctld slurmd slurm-client munge
   nlohmann-json3-dev
+  python3-yaml
 )
 
 missing=()
