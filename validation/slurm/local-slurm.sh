@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # A one-node Slurm on this machine, for tests and trials: MUNGE, slurmctld and slurmd run as root with a
 # configuration written for this host (its real CPU count and memory from `slurmd -C`), plugins that need no
-# cgroup set-up (proctrack/linuxproc, task/none), no accounting, all state, logs, sockets and keys under one
-# state folder. Nothing outside the state folder is changed except installing Debian's packages when missing.
+# cgroup set-up (proctrack/linuxproc, task/none), no accounting, all state, logs and keys under one state folder
+# (sockets under a short /tmp/stipple-slurm-<hash> beside it). Nothing else is changed except installing Debian's
+# packages when missing.
 #
 # usage: local-slurm.sh start|stop|status [STATE_DIR]
 #   STATE_DIR  default: $STIPPLE_SLURM_STATE, else ${TMPDIR:-/tmp}/stipple-slurm
@@ -20,6 +21,9 @@ state=${2:-${STIPPLE_SLURM_STATE:-${TMPDIR:-/tmp}/stipple-slurm}}
 port=${STIPPLE_SLURM_PORT:-6817}
 wait_seconds=${STIPPLE_SLURM_WAIT:-60}
 conf=$state/slurm.conf
+# Sockets (MUNGE's, slurmstepd's in the spool) live under a short path derived from STATE_DIR: a Unix socket's
+# path may not exceed 107 bytes, and STATE_DIR may be deep inside a build folder.
+run=/tmp/stipple-slurm-$(printf %s "$(realpath -m "$state")" | md5sum | cut -c1-12)
 
 die() { echo "local-slurm: $*" >&2; exit 1; }
 
@@ -58,6 +62,7 @@ stop() {
     stop_daemon "$state/slurmd.pid" slurmd
     stop_daemon "$state/slurmctld.pid" slurmctld
     stop_daemon "$state/munged.pid" munged
+    rm -rf "$run"
 }
 
 logs() {
@@ -82,7 +87,7 @@ SlurmUser=root
 SlurmdUser=root
 AuthType=auth/munge
 CredType=cred/munge
-AuthInfo=socket=$state/munge/munge.socket
+AuthInfo=socket=$run/munge/munge.socket
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 JobAcctGatherType=jobacct_gather/none
@@ -98,7 +103,7 @@ MinJobAge=600
 KillWait=5
 InactiveLimit=0
 StateSaveLocation=$state/ctld
-SlurmdSpoolDir=$state/spool
+SlurmdSpoolDir=$run/spool
 SlurmctldPidFile=$state/slurmctld.pid
 SlurmdPidFile=$state/slurmd.pid
 SlurmctldLogFile=$state/slurmctld.log
@@ -122,9 +127,9 @@ start() {
     fi
     mkdir -p "$state"
     chmod 700 "$state"
-    rm -rf "$state/ctld" "$state/spool" "$state/munge"
-    mkdir -p "$state/ctld" "$state/spool" "$state/munge"
-    chmod 700 "$state/munge"
+    rm -rf "$state/ctld" "$run"
+    mkdir -p "$state/ctld" "$run/spool" "$run/munge"
+    chmod 700 "$run" "$run/munge"
     rm -f "$state"/*.log
     # A key of our own, so this MUNGE needs nothing from /etc/munge.
     [ -s "$state/munge.key" ] || { dd if=/dev/urandom of="$state/munge.key" bs=1024 count=1 status=none; }
@@ -133,8 +138,8 @@ start() {
     local node
     node=$(cat "$state/node")
 
-    munged --force --socket="$state/munge/munge.socket" --key-file="$state/munge.key" \
-        --pid-file="$state/munged.pid" --log-file="$state/munged.log" --seed-file="$state/munge/munged.seed" \
+    munged --force --socket="$run/munge/munge.socket" --key-file="$state/munge.key" \
+        --pid-file="$state/munged.pid" --log-file="$state/munged.log" --seed-file="$run/munge/munged.seed" \
         || { logs; die "munged did not start"; }
     # -c: a clean controller state (no jobs of an earlier run); -i: ignore what cannot be recovered.
     slurmctld -f "$conf" -c -i || { logs; stop; die "slurmctld did not start"; }

@@ -19,6 +19,7 @@ mkdir -p "$work"
 # Its own ports unless told otherwise, so a local Slurm someone left on the default ports does not clash.
 export STIPPLE_SLURM_PORT=${STIPPLE_SLURM_PORT:-6917}
 trap 'bash "$slurm/local-slurm.sh" stop "$state" || true' EXIT
+trap 'exit 130' INT TERM HUP  # so that the EXIT trap stops the daemons when the test is interrupted
 if ! bash "$slurm/local-slurm.sh" start "$state" > "$work/slurm-env" 2> "$work/slurm-start.log"; then
     cat "$work/slurm-start.log"
     echo "FAILED: Slurm could not start on this machine (see above); this test needs a one-node Slurm (root, Debian's slurm-wlm and munge)"
