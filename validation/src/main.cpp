@@ -94,6 +94,11 @@ Args parseArgs(int argc, char** argv) {
     return a;
 }
 
+bool isMatrixCell(const Matrix& m, const ResultRow& row) {
+    auto has = [](const auto& list, const auto& v) { return std::find(list.begin(), list.end(), v) != list.end(); };
+    return m.findScene(row.scene) && has(m.patterns, row.pattern) && has(m.spp, row.spp) && has(m.seeds, row.seed);
+}
+
 // Combines the results.json of shard folders; every cell × seed of the matrix must be there exactly once.
 Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const std::string& out) {
     // Shards of different matrices or builds would average renders that cannot be compared: refuse them first.
@@ -115,6 +120,9 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
             if (!known) merged.scenes.push_back(s);
         }
         for (const auto& row : r.rows) {
+            if (!isMatrixCell(m, row))
+                throw std::runtime_error(dir + ": " + row.scene + " " + row.pattern + " " + std::to_string(row.spp) +
+                                         " spp seed " + std::to_string(row.seed) + " is not a cell × seed of " + m.path);
             if (!seen.insert({row.scene, row.pattern, row.spp, row.seed}).second)
                 throw std::runtime_error(dir + ": " + row.scene + " " + row.pattern + " " + std::to_string(row.spp) +
                                          " spp seed " + std::to_string(row.seed) + " appears in two shards");

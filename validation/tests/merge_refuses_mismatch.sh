@@ -2,7 +2,7 @@
 # --merge must refuse shards that ran different matrices or builds, naming the first differing fingerprint field,
 # both values and both shard folders. Shard 1/2 always runs the base matrix; shard 2/2 runs a variant (image size,
 # max depth, reference spp, the scene file's content) or has its recorded renderer version edited. A control pair
-# of the base matrix must merge.
+# of the base matrix must merge; extra, duplicate and missing rows are refused.
 # usage: merge_refuses_mismatch.sh STIPPLE_VALIDATE SCENE_FILE WORKDIR
 set -eu
 bin=$1 scene=$2 work=$3
@@ -100,6 +100,30 @@ if [ "$status" -ne 3 ] || ! grep -qF "differ first in matrix.seeds: [1,2,3,4] ($
 else
   echo "ok (merge matrix): $(grep -F 'differ first' "$work/merged-other.log")"
 fi
+
+# Rows: an extra one (a seed the matrix does not have), a shard given twice (duplicates), a shard left out.
+cp -r "$work/s2" "$work/extra"
+python3 - "$work/extra/results.json" <<'PY'
+import json, sys
+p = sys.argv[1]
+r = json.load(open(p))
+row = dict(r["rows"][0]); row["seed"] = 99
+r["rows"].append(row)
+json.dump(r, open(p, "w"), indent=2)
+PY
+expect_rows() { # name expected-message folders...
+  local name=$1 want=$2 status=0
+  shift 2
+  "$bin" "$work/base.yaml" -o "$work/merged-$name" --merge "$@" > "$work/merged-$name.log" 2>&1 || status=$?
+  if [ "$status" -ne 3 ] || ! grep -qE -- "$want" "$work/merged-$name.log"; then
+    echo "FAILED ($name): exit $status, expected 3 and /$want/"; cat "$work/merged-$name.log"; failures=$((failures + 1))
+  else
+    echo "ok ($name): $(tail -n 1 "$work/merged-$name.log")"
+  fi
+}
+expect_rows extra "extra: box .* spp seed 99 is not a cell × seed of" "$work/s1" "$work/extra"
+expect_rows duplicate "appears in two shards" "$work/s1" "$work/s2" "$work/s1"
+expect_rows missing "cell × seed rows of .* are in none of the folders" "$work/s1"
 
 [ "$failures" -eq 0 ] || { echo "FAILED: $failures mismatches were not refused as expected"; exit 1; }
 echo "PASSED: every mismatch refused, naming the field, both values and both folders"
