@@ -17,13 +17,13 @@
 set -euo pipefail
 
 cmd=${1:-}
-state=${2:-${STIPPLE_SLURM_STATE:-${TMPDIR:-/tmp}/stipple-slurm}}
+state=$(realpath -m "${2:-${STIPPLE_SLURM_STATE:-${TMPDIR:-/tmp}/stipple-slurm}}")
 port=${STIPPLE_SLURM_PORT:-6817}
 wait_seconds=${STIPPLE_SLURM_WAIT:-60}
 conf=$state/slurm.conf
 # Sockets (MUNGE's, slurmstepd's in the spool) live under a short path derived from STATE_DIR: a Unix socket's
 # path may not exceed 107 bytes, and STATE_DIR may be deep inside a build folder.
-run=/tmp/stipple-slurm-$(printf %s "$(realpath -m "$state")" | md5sum | cut -c1-12)
+run=/tmp/stipple-slurm-$(printf %s "$state" | md5sum | cut -c1-12)
 
 die() { echo "local-slurm: $*" >&2; exit 1; }
 
