@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzing CI (issue 7): build the three libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each
+# Fuzzing CI: build the three libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each
 # for a bounded time over its seed corpus and its regressions. Exit status 1 when any harness finds a crash,
 # a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/ and the command
 # to replay it is printed. Fix the bug, then add the file to <part>/fuzz/regressions/ (replayed by CTest).

@@ -8,7 +8,7 @@ packages=(
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools python3-imath
   libopencolorio-dev
-  libyaml-cpp-dev
+  libyaml-cpp-dev nlohmann-json3-dev
   libboost-test-dev
   libbenchmark-dev
   gnuplot-nox

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sanitizer CI (issue 7): build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
+# Sanitizer CI: build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
 # labels `slow` and `slurm` (the Slurm test checks job orchestration, which the release run covers); build the
 # tsan preset and run label `parallel` (tests that exercise several threads).
 # Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
@@ -11,7 +11,7 @@
 #   STIPPLE_TSAN_EXCLUDE                ctest -E regex of parallel tests to leave out of the TSan run (default: none)
 #
 # TSan and TBB: Debian's libtbb is not instrumented, so TSan cannot see tbb::parallel_for's hand-overs. TSan builds
-# of the renderer therefore render tiles on std::thread workers (integrators/src/scene.cpp, under
+# of the renderer therefore render tiles on std::thread workers (integrators/src/renderer.cpp, under
 # __SANITIZE_THREAD__), whose every edge TSan sees; ci/sanitizers.supp covers only what happens inside the
 # uninstrumented TBB and Embree libraries. A deliberate race in the tile body is reported (checked by hand).
 set -euo pipefail

@@ -5,7 +5,7 @@
 // When the parsed scene is small (<= 2000 triangles + spheres, <= 64 instances) it is also built (Embree BVH)
 // and rendered at 4x4 pixels, 1 spp, max depth 3, one thread; the image must be finite where the renderer says
 // it accumulated finite samples. Bigger scenes are only parsed: the cap keeps each input well under a second.
-#include "scene_loader.h"
+#include "scene/scene_loader.h"
 
 #include <stipple/render/renderer.h>
 

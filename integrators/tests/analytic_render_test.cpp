@@ -1,4 +1,4 @@
-// Analytic renders (DESIGN.md section 6, as pbrt-v4's integrators_test):
+// Analytic renders (as pbrt-v4's integrators_test):
 //  - the furnace sphere: camera inside a sphere of albedo 0.5 emitting 0.5 -> radiance exactly 1, for each
 //    pattern, path tracer;
 //  - a square light over a diffuse plane -> the closed-form radiance albedo * L * F, direct integrator.

@@ -29,7 +29,7 @@ void compare(const std::string& file, int maxDepth, uint64_t seed, int kBlock = 
     o.spp = 32;
     SeedRenders path = renderSeeds(*scene, o, kRenders, seed + 1000);
     for (const RenderResult& r : bdpt.renders) BOOST_TEST(r.nonFiniteSamples == 0u);
-    const double alpha = sidakAlpha(0.01, kTests);
+    const double alpha = sidak(0.01, kTests);
     double minP = 1;
     for (int by = 0; by < kSize / kBlock; ++by)
         for (int bx = 0; bx < kSize / kBlock; ++bx) {

@@ -1,4 +1,4 @@
-// BDPT on the analytic furnace (DESIGN.md section 6): a camera inside a sphere of albedo 0.5 whose inside emits
+// BDPT on the analytic furnace: a camera inside a sphere of albedo 0.5 whose inside emits
 // 0.5 sees radiance sum_{k=0..D} 0.5 * 0.5^k = 1 - 0.5^(D+1) at max depth D (BDPT has no Russian roulette, so
 // the truncation is exact). Pinhole camera, and a thin lens (lens density, importance and raster projection of
 // the light-tracing strategy t = 1).
@@ -29,8 +29,7 @@ void checkFurnace(const std::string& file, int maxDepth, uint64_t seed) {
     BlockEstimate e = blockEstimate(s, 0, 0, 16, 16);
     double expected = 1 - std::pow(0.5, maxDepth + 1);
     double sd = std::sqrt(e.varianceOfMean);
-    boost::math::students_t dist(kRenders - 1);
-    double t = boost::math::quantile(boost::math::complement(dist, sidakAlpha(0.01, kCases) / 2));
+    double t = stipple::testing::studentCritical(sidak(0.01, kCases), kRenders - 1);
     BOOST_TEST_MESSAGE(file << " D=" << maxDepth << ": mean " << e.mean << " expected " << expected << " +- "
                             << t * sd);
     for (const RenderResult& r : s.renders) BOOST_TEST(r.nonFiniteSamples == 0u);

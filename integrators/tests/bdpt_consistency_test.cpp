@@ -9,10 +9,10 @@
 #define BOOST_TEST_MODULE bdpt_consistency
 #include <boost/test/unit_test.hpp>
 
-#include "bdpt_mis.h"
-#include "bdpt_subpath.h"
-#include "pixel_sampler.h"
-#include "scene_loader.h"
+#include "integrators/bdpt/bdpt_mis.h"
+#include "integrators/bdpt/bdpt_subpath.h"
+#include "sampling/pixel_sampler.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 using namespace stipple::render;

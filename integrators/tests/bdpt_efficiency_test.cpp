@@ -2,7 +2,7 @@
 // floor) and, for the record, on the diffuse Cornell box. For each integrator K = 6 renders with different seeds
 // are made, interleaved so that load on a shared machine hits both alike. Both estimators are unbiased (see
 // bdpt_agreement_test), so the MSE of one render is its variance, estimated per pixel from the spread of the K
-// renders; RMS is the study's (DESIGN.md section 5: channels summed, pixels averaged). Variance falls as 1/time,
+// renders; RMS is the study's (equation 1: channels summed, pixels averaged). Variance falls as 1/time,
 // so BDPT's RMS at the path tracer's time is RMS_bdpt * sqrt(t_bdpt / t_path).
 // Asserted: on the caustic, BDPT's RMS at equal time is below the path tracer's (the path tracer reaches the
 // light through the glass only by chance; light tracing, t = 1, sees the caustic directly). Printed: time per

@@ -3,7 +3,7 @@
 #define BOOST_TEST_MODULE bdpt_layout
 #include <boost/test/unit_test.hpp>
 
-#include "bdpt_integrator.h"
+#include "integrators/bdpt/bdpt_integrator.h"
 #include "test_support.h"
 
 #include <sstream>

@@ -25,7 +25,7 @@ void checkDepth(int depth, uint64_t seed) {
     o.spp = 16;
     o.integrator = "bdpt:depth=" + std::to_string(depth);
     SeedRenders mis = renderSeeds(*scene, o, kRenders, seed);
-    const double alpha = sidakAlpha(0.01, kPairs * kBlocks);
+    const double alpha = sidak(0.01, kPairs * kBlocks);
     for (int s = 0; s <= depth + 1; ++s) {
         int t = depth + 2 - s;
         o.integrator = "bdpt:s=" + std::to_string(s) + ",t=" + std::to_string(t);

@@ -6,7 +6,7 @@
 
 #include "test_support.h"
 
-#include <boost/math/distributions/students_t.hpp>
+#include <stipple/testing/statistics.h>
 
 #include <chrono>
 #include <vector>
@@ -29,11 +29,9 @@ inline SeedRenders renderSeeds(const Scene& scene, RenderOptions o, int k, uint6
 }
 
 // Mean of a block (over its pixels and channels) across renders, and the variance of that mean.
-struct BlockEstimate {
-    double mean = 0;
-    double varianceOfMean = 0;
-    int k = 0;
-};
+using BlockEstimate = stipple::testing::MeanEstimate;
+using stipple::testing::sidak;
+using stipple::testing::welchPValue;
 
 inline BlockEstimate blockEstimate(const SeedRenders& s, int x0, int y0, int w, int h) {
     BlockEstimate e;
@@ -53,21 +51,7 @@ inline BlockEstimate blockEstimate(const SeedRenders& s, int x0, int y0, int w, 
     return e;
 }
 
-// Two-sided p-value of Welch's t-test for equal means; 1 when both blocks are exactly equal and noise-free.
-inline double welchPValue(const BlockEstimate& a, const BlockEstimate& b) {
-    double v = a.varianceOfMean + b.varianceOfMean;
-    if (v == 0) return a.mean == b.mean ? 1.0 : 0.0;
-    double t = (a.mean - b.mean) / std::sqrt(v);
-    double den = a.varianceOfMean * a.varianceOfMean / (a.k - 1) + b.varianceOfMean * b.varianceOfMean / (b.k - 1);
-    double df = den > 0 ? v * v / den : double(a.k + b.k - 2);
-    boost::math::students_t dist(df);
-    return 2 * boost::math::cdf(boost::math::complement(dist, std::abs(t)));
-}
-
-// Per-test significance for a family of `tests` tests at family-wise alpha (Sidak).
-inline double sidakAlpha(double alpha, int tests) { return 1 - std::pow(1 - alpha, 1.0 / tests); }
-
-// Study RMS (DESIGN.md section 5) of ONE render, estimated from the spread of K unbiased renders: the per-pixel
+// Study RMS (its equation 1: channels summed, pixels averaged) of ONE render, estimated from the spread of K unbiased renders: the per-pixel
 // sample variance across renders summed over channels, averaged over pixels, square-rooted (bias is zero).
 inline double rmsFromSpread(const SeedRenders& s) {
     const RenderResult& r0 = s.renders.front();

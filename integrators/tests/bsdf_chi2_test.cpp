@@ -7,10 +7,10 @@
 #define BOOST_TEST_MODULE bsdf_chi2
 #include <boost/test/unit_test.hpp>
 
-#include "material.h"
-#include "pixel_sampler.h"
+#include "materials/material.h"
+#include "sampling/pixel_sampler.h"
 
-#include <boost/math/distributions/chi_squared.hpp>
+#include <stipple/testing/statistics.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -104,18 +104,9 @@ double chi2PValue(const Config& c, const ShimLibrary& shim, uint32_t configIndex
             integral += cell;
         }
     lost = 1 - integral; // mass of failed samples (below the horizon), reported for information
-    // Pool cells expecting < 5 into one.
-    double chi2 = 0, poolO = 0, poolE = 0;
-    cellsUsed = 0;
-    for (size_t i = 0; i < observed.size(); ++i) {
-        if (expected[i] < 5) {
-            poolO += observed[i];
-            poolE += expected[i];
-            continue;
-        }
-        chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-        ++cellsUsed;
-    }
+    // Cells expecting fewer than 5 samples are pooled (stipple::testing::chiSquareTest states the rule).
+    const stipple::testing::ChiSquareResult chi = stipple::testing::chiSquareTest(observed, expected);
+    cellsUsed = chi.degreesOfFreedom + 1;
     if (std::getenv("CHI2_DEBUG")) {
         std::vector<std::pair<double, size_t>> worst;
         for (size_t i = 0; i < observed.size(); ++i)
@@ -125,17 +116,8 @@ double chi2PValue(const Config& c, const ShimLibrary& shim, uint32_t configIndex
             size_t i = worst[k].second;
             std::printf("%s cell t%zu p%zu obs %.0f exp %.1f\n", c.label.c_str(), i / kPhiBins, i % kPhiBins, observed[i], expected[i]);
         }
-        std::printf("pool obs %.0f exp %.1f\n", poolO, poolE);
     }
-    if (poolE >= 5) {
-        chi2 += (poolO - poolE) * (poolO - poolE) / poolE;
-        ++cellsUsed;
-    } else if (poolO > 20) {
-        return 0; // many samples where the pdf says there are (almost) none
-    }
-    if (cellsUsed < 2) return 1;
-    boost::math::chi_squared dist(cellsUsed - 1);
-    return boost::math::cdf(boost::math::complement(dist, chi2));
+    return chi.pValue;
 }
 
 std::vector<Config> configs() {
@@ -168,7 +150,7 @@ std::vector<Config> configs() {
 BOOST_AUTO_TEST_CASE(sampling_matches_pdf) {
     const ShimLibrary& shim = ShimLibrary::get();
     std::vector<Config> cs = configs();
-    double alpha = 1 - std::pow(1 - 0.01, 1.0 / double(cs.size()));
+    const double alpha = stipple::testing::sidak(0.01, int(cs.size()));
     for (size_t i = 0; i < cs.size(); ++i) {
         int cells = 0;
         double lost = 0;

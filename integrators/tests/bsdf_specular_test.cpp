@@ -3,8 +3,8 @@
 #define BOOST_TEST_MODULE bsdf_specular
 #include <boost/test/unit_test.hpp>
 
-#include "material.h"
-#include "microfacet.h"
+#include "materials/material.h"
+#include "materials/microfacet.h"
 
 using namespace stipple::render;
 

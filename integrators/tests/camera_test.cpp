@@ -4,7 +4,7 @@
 #define BOOST_TEST_MODULE camera
 #include <boost/test/unit_test.hpp>
 
-#include "camera.h"
+#include "camera/camera.h"
 
 using namespace stipple::render;
 

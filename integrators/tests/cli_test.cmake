@@ -26,3 +26,7 @@ execute_process(COMMAND ${EXE} ${SCENE} --print-layout OUTPUT_VARIABLE layout RE
 if(NOT rc EQUAL 0 OR NOT layout MATCHES "^0 pixel 2D x1\n1 b0.light.pos")
   message(FATAL_ERROR "--print-layout: rc ${rc}, output:\n${layout}")
 endif()
+execute_process(COMMAND ${EXE} --version OUTPUT_VARIABLE version RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR NOT version MATCHES "^stipple-render [0-9]+\\.[0-9]+\\.[0-9]+")
+  message(FATAL_ERROR "--version: rc ${rc}, output:\n${version}")
+endif()

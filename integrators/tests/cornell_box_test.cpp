@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+
 using namespace stipple::render;
 using namespace stipple::render::test;
 
@@ -63,8 +65,53 @@ BOOST_AUTO_TEST_CASE(renders_and_writes) {
     BOOST_TEST(pngBack.width == 48);
 }
 
+BOOST_AUTO_TEST_CASE(settings_are_resolved_once) {
+    // Every "scene default" is filled in by Scene::resolve, and a render returns what it used.
+    auto scene = Scene::load(scenePath("cornell-box.yaml"));
+    RenderOptions o;
+    const RenderOptions r = scene->resolve(o);
+    BOOST_TEST(r.integrator == "path");
+    BOOST_TEST(r.maxDepth == 8);
+    BOOST_TEST(r.width == 256);
+    BOOST_TEST(r.height == 256);
+    BOOST_TEST(r.spp == 64u);
+    o.width = 8;
+    o.height = 4;
+    o.spp = 2;
+    o.maxDepth = 3;
+    const RenderResult result = scene->render(o);
+    BOOST_TEST(result.settings.maxDepth == 3);
+    BOOST_TEST(result.settings.width == 8);
+    BOOST_TEST(result.settings.spp == 2u);
+    BOOST_TEST(result.settings.integrator == "path");
+}
+
+BOOST_AUTO_TEST_CASE(exr_metadata_vocabulary) {
+    // Keys are written once under "stipple:" (never twice), with the standard Software and chromaticities.
+    Image im;
+    im.width = 2;
+    im.height = 1;
+    im.rgb = {0.5f, 0.25f, 1, 0, 0, 0};
+    std::string exr = writeTempFile("meta.exr", "");
+    writeExr(exr, im, {{"scene", "cornell-box"}, {"content_hash", "0123456789abcdef"}, {"spp", "8"}});
+    const ImageMetadata back = readExrMetadata(exr);
+    const ImageMetadata expected = {{"scene", "cornell-box"}, {"content_hash", "0123456789abcdef"}, {"spp", "8"}};
+    for (const auto& kv : expected)
+        BOOST_TEST((std::find(back.begin(), back.end(), kv) != back.end()), kv.first);
+    for (const auto& [key, value] : back) BOOST_TEST(key.find(':') == std::string::npos, key);
+    auto in = OIIO::ImageInput::open(exr);
+    BOOST_REQUIRE(in);
+    BOOST_TEST(in->spec().get_string_attribute("Software") == std::string(rendererVersion()));
+    const OIIO::ParamValue* chroma = in->spec().find_attribute("chromaticities");
+    BOOST_REQUIRE(chroma);
+    BOOST_TEST(chroma->type().numelements() * chroma->type().aggregate == 8u);
+    BOOST_TEST(in->spec().find_attribute("stipple:stipple:scene") == nullptr);
+    // A key that already carries a prefix is a caller's mistake, named in the error.
+    BOOST_CHECK_THROW(writeExr(exr, im, {{"stipple:scene", "x"}}), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(srgb_preview_curve) {
-    // 0.18 scene-linear -> sRGB 0.4614 (toolchain.md checked values), 1 -> 1, 0 -> 0.
+    // 0.18 scene-linear -> sRGB 1.055 * 0.18^(1/2.4) - 0.055 = 0.4614, 1 -> 1, 0 -> 0.
     Image im;
     im.width = 3;
     im.height = 1;

@@ -3,10 +3,10 @@
 #define BOOST_TEST_MODULE mesh_io
 #include <boost/test/unit_test.hpp>
 
-#include "mesh_io.h"
-#include "render_scene.h"
-#include "scene_loader.h"
-#include "shape_builders.h"
+#include "scene/mesh_io.h"
+#include "scene/render_scene.h"
+#include "scene/scene_loader.h"
+#include "scene/shape_builders.h"
 #include "test_support.h"
 
 #include <cstring>

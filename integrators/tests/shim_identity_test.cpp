@@ -61,3 +61,13 @@ BOOST_AUTO_TEST_CASE(no_library_is_an_error_naming_the_path) {
         BOOST_CHECK(std::string(e.what()).find("/nonexistent/libstipple.so.1") != std::string::npos);
     }
 }
+
+BOOST_AUTO_TEST_CASE(renderer_identity_names_its_sources) {
+    // The reference cache keys on it: the version and the build's hash of the renderer's sources.
+    const std::string hash = stipple::render::rendererSourceHash();
+    BOOST_TEST(hash.size() == 16u);
+    BOOST_TEST(hash.find_first_not_of("0123456789abcdef") == std::string::npos);
+    const std::string id = stipple::render::rendererIdentity();
+    BOOST_TEST(id.rfind(stipple::render::rendererVersion(), 0) == 0u);
+    BOOST_TEST(id.find(hash) != std::string::npos);
+}

@@ -1,4 +1,4 @@
-// Stiff and extreme renders (issue 7), through the public renderer API on the small scenes of tests/stiff-scenes/.
+// Stiff and extreme renders, through the public renderer API on the small scenes of tests/stiff-scenes/.
 // Every case states its expected outcome: an exact value, a value within a bound, or a clear SceneError.
 // Every render must also come back finite with nonFiniteSamples == 0 (the film's discarded-sample count is
 // printed with --log_level=message).

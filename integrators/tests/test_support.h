@@ -3,7 +3,7 @@
 
 #include <stipple/render/renderer.h>
 
-#include <boost/math/distributions/normal.hpp>
+#include <stipple/testing/statistics.h>
 
 #include <cmath>
 #include <cstring>
@@ -73,10 +73,6 @@ inline bool bitwiseEqual(const Image& a, const Image& b) {
            std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
 }
 
-// Two-sided critical z for significance alpha split Sidak-style over `tests` tests.
-inline double sidakZ(double alpha, int tests) {
-    double a = 1 - std::pow(1 - alpha, 1.0 / tests);
-    return boost::math::quantile(boost::math::complement(boost::math::normal(), a / 2));
-}
+using stipple::testing::sidakZ;
 
 } // namespace stipple::render::test

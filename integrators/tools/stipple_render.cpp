@@ -3,7 +3,9 @@
 //                  [--max-depth D] [--threads T] [--exposure E] [--shim PATH] [--print-layout] [-o out.exr]
 // Exit codes: 0 success, 1 render/output failure, 2 bad arguments or a scene that cannot be loaded.
 #include <stipple/render/renderer.h>
+#include <stipple/version.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -19,9 +21,10 @@ using namespace stipple::render;
 namespace {
 
 const char* kUsage =
-    "usage: stipple-render <scene.yaml> [--pattern independent|stratified|poisson|poisson-seed] [--spp N]\n"
-    "                      [--seed S] [--integrator path|direct|bdpt] [--width W] [--height H] [--max-depth D]\n"
-    "                      [--threads T] [--exposure STOPS] [--shim PATH] [--print-layout] [-o out.exr]\n";
+    "usage: stipple-render <scene.yaml> [--pattern P] [--spp N] [--seed S] [--integrator I]\n"
+    "                      [--width W] [--height H] [--max-depth D]\n"
+    "                      [--threads T] [--exposure STOPS] [--shim PATH] [--print-layout] [-o out.exr]\n"
+    "       stipple-render --version | --help\n";
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -79,13 +82,12 @@ int main(int argc, char** argv) {
             if (a == "-h" || a == "--help") {
                 std::cout << kUsage;
                 return 0;
+            } else if (a == "--version") {
+                std::cout << stipple::versionLine("stipple-render") << "\n";
+                return 0;
             } else if (a == "--pattern") {
                 options.pattern = value();
                 patternGiven = true;
-                if (options.pattern != "independent" && options.pattern != "stratified" && options.pattern != "poisson" &&
-                    options.pattern != "poisson-seed")
-                    throw UsageError("option --pattern: expected independent, stratified, poisson or poisson-seed, got '" +
-                                     options.pattern + "'");
             } else if (a == "--spp") {
                 options.spp = uint32_t(parseInt(a, value(), 1, 1 << 20));
             } else if (a == "--seed") {
@@ -123,7 +125,22 @@ int main(int argc, char** argv) {
         std::cerr << "stipple-render: " << e.what() << "\n" << kUsage;
         return 2;
     }
-    (void)patternGiven;
+    if (patternGiven) {
+        // The names come from the shim that will serve them; a shim that does not load is reported by the render.
+        std::vector<std::string> known;
+        try {
+            known = patternNames(options.shim);
+        } catch (const std::exception&) {
+        }
+        if (!known.empty() && std::find(known.begin(), known.end(), options.pattern) == known.end()) {
+            std::string list;
+            for (const std::string& n : known) list += (list.empty() ? "" : ", ") + n;
+            std::cerr << "stipple-render: option --pattern: expected one of " << list << ", got '" << options.pattern
+                      << "'\n"
+                      << kUsage;
+            return 2;
+        }
+    }
 
     std::unique_ptr<Scene> scene;
     try {
@@ -145,8 +162,8 @@ int main(int argc, char** argv) {
                   << scene->contentHash() << ")\n"
                   << "load " << fmt(scene->loadSeconds()) << " s, BVH build " << fmt(scene->buildSeconds()) << " s\n";
         RenderResult r = scene->render(options);
-        std::string integrator = options.integrator.empty() ? scene->defaultIntegrator() : options.integrator;
-        uint32_t spp = options.spp ? options.spp : scene->defaultSpp();
+        const std::string& integrator = r.settings.integrator;
+        const uint32_t spp = r.settings.spp;
         std::cout << "layout:\n" << r.layout;
         std::cout << "render " << fmt(r.renderSeconds) << " s (" << r.image.width << "x" << r.image.height << ", " << spp
                   << " spp, " << options.pattern << ", " << integrator << ")\n"
@@ -156,17 +173,18 @@ int main(int argc, char** argv) {
                   << " Mrays/s)\n"
                   << "non-finite samples " << r.nonFiniteSamples << "\n";
         if (output.empty()) output = scene->name() + ".exr";
-        std::vector<std::pair<std::string, std::string>> meta{
+        ImageMetadata meta{
             {"scene", scene->name()},
-            {"scene_hash", scene->contentHash()},
+            {"content_hash", scene->contentHash()},
             {"integrator", integrator},
             {"pattern", options.pattern},
             {"spp", std::to_string(spp)},
             {"seed", std::to_string(options.seed)},
+            {"max_depth", std::to_string(r.settings.maxDepth)},
             {"render_seconds", fmt(r.renderSeconds, 6)},
             {"sampler_seconds", fmt(r.samplerSeconds, 6)},
             {"non_finite_samples", std::to_string(r.nonFiniteSamples)},
-            {"version", rendererVersion()},
+            {"renderer", rendererIdentity()},
         };
         writeExr(output, r.image, meta);
         std::string png = std::filesystem::path(output).replace_extension(".png").string();

@@ -1,6 +1,8 @@
 // stipple-citygen: writes the Italian City's geometry (binary PLY prototypes + an includable YAML of instances).
-//   stipple-citygen [--seed N] [--out DIR] [--name NAME]
+//   stipple-citygen [--seed N] [--out DIR] [--name NAME] | --version
 #include "town.h"
+
+#include <stipple/version.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -12,7 +14,7 @@ namespace {
 
 int usage(const char* msg, const char* arg) {
     std::fprintf(stderr, "stipple-citygen: %s%s%s\n", msg, arg ? ": " : "", arg ? arg : "");
-    std::fprintf(stderr, "usage: stipple-citygen [--seed N] [--out DIR] [--name NAME]\n"
+    std::fprintf(stderr, "usage: stipple-citygen [--seed N] [--out DIR] [--name NAME] | --version\n"
                          "  writes DIR/NAME.yaml and DIR/NAME/*.ply (defaults: seed 1, DIR ., NAME italian-city-town)\n");
     return 2;
 }
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         if (a == "-h" || a == "--help") return usage("help", nullptr), 0;
+        if (a == "--version") return std::printf("%s\n", stipple::versionLine("stipple-citygen").c_str()), 0;
         if (i + 1 >= argc) return usage("missing value after", argv[i]);
         const char* v = argv[++i];
         if (a == "--seed") {

@@ -17,6 +17,7 @@
 // poisson-served through the C API from the warmed cache (what hosts pay per pixel; warm-up timed apart).
 // Times are thread CPU time (the machine is shared; wall time is in the CSV too).
 #include <stipple/stipple.h>
+#include <stipple/version.h>
 
 #include "pointsets/pointsets.h"
 #include "pointsets/spectrum.h"
@@ -155,7 +156,10 @@ int main(int argc, char **argv) {
             }
             return int(x);
         };
-        if (a == "-o" || a == "--output") opt.out = value("a directory");
+        if (a == "--version") {
+            std::cout << stipple::versionLine("shim_pointsets_figure3") << "\n";
+            return 0;
+        } else if (a == "-o" || a == "--output") opt.out = value("a directory");
         else if (a == "--sets") opt.sets = number("a set count", 1, 100000);
         else if (a == "--spectrum-sets") opt.spectrumSets = number("a set count", 1, 10000);
         else if (a == "--quick") opt.quick = true;

@@ -1,5 +1,3 @@
-// ctest-labels: unit;parallel
-// stipple-link: shared
 // api_errors_test.cpp — every error path of the C ABI returns the right status and a message naming the
 // argument; nothing crashes. Runs against libstipple.so itself, as hosts see it.
 #define BOOST_TEST_MODULE api_errors

@@ -1,4 +1,3 @@
-// ctest-labels: statistical
 // correlation_test.cpp — no correlation between dimensions, nor between neighbouring pixels.
 //
 // For each pattern x N (16, 256) x pair, the pairs (value of sample i in A, value of sample i in B) over all
@@ -8,12 +7,13 @@
 // more even than multinomial, which only lowers the statistic: the test stays valid (conservative) for them.
 // The Pearson correlation coefficient is also bounded: |r| < 4 / sqrt(pairs) (4 standard errors).
 #define BOOST_TEST_MODULE correlation
-#include "chi2.h"
+#include <stipple/testing/statistics.h>
 #include "sampler_fixture.h"
 
 #include <cmath>
 
 using namespace stipple::test;
+using namespace stipple::testing;
 
 BOOST_AUTO_TEST_CASE(dimensions_and_pixels_are_uncorrelated) {
   const double alpha = sidak(0.01, 4 * 2 * 2);

@@ -1,4 +1,3 @@
-// ctest-labels: unit;parallel
 // determinism_test.cpp — every value is a pure function of (seed, pixel, sample, dimension): the same from any
 // thread, in any call order, and random access (stipple_sampler_sample) equals the batch call bitwise.
 #define BOOST_TEST_MODULE determinism

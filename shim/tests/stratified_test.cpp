@@ -1,4 +1,3 @@
-// ctest-labels: unit
 // stratified_test.cpp — one sample per stratum for every N (square, non-square, prime), arity and k; the grid
 // rule of shim/README.md (exact most-square factorisation when its aspect is <= 2, else the padded grid).
 #define BOOST_TEST_MODULE stratified

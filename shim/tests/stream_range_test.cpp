@@ -1,4 +1,3 @@
-// ctest-labels: unit
 // stream_range_test.cpp — every value of every pattern, arity, k and N lies in [0, 1); info matches the layout.
 #define BOOST_TEST_MODULE stream_range
 #include "sampler_fixture.h"

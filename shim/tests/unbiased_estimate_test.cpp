@@ -1,4 +1,3 @@
-// ctest-labels: statistical
 // unbiased_estimate_test.cpp — every pattern gives unbiased estimates of integrals with known values.
 //
 // For each pattern x arity (1, 2, 3) x N (16, 256): 512 pixels, each an independent estimate (the mean of the
@@ -7,15 +6,15 @@
 // would show first: 1D the step [x < 0.3] (0.3), 2D the quarter disk (pi/4), 3D the sphere octant (pi/6).
 // Fixed seeds; family-wise alpha = 0.01, Sidak-corrected over the 24 tests.
 #define BOOST_TEST_MODULE unbiased_estimate
-#include "chi2.h"
+#include <stipple/testing/statistics.h>
 #include "sampler_fixture.h"
 
-#include <boost/math/distributions/students_t.hpp>
 
 #include <cmath>
 #include <numbers>
 
 using namespace stipple::test;
+using namespace stipple::testing;
 
 namespace {
 
@@ -58,8 +57,7 @@ BOOST_AUTO_TEST_CASE(estimates_are_unbiased) {
         BOOST_REQUIRE_MESSAGE(standardError > 0, patternName(pattern) << " arity " << arity << " N=" << n
                                                                        << ": all 512 estimates identical");
         const double t = error / standardError;
-        const boost::math::students_t dist(kPixels - 1);
-        const double pValue = 2 * boost::math::cdf(boost::math::complement(dist, std::fabs(t)));
+        const double pValue = studentTwoSidedP(t, kPixels - 1);
         BOOST_CHECK_MESSAGE(pValue > alpha, patternName(pattern) << " arity " << arity << " N=" << n << ": mean "
                                                                  << mean << " vs exact " << exactValue(arity)
                                                                  << ", t = " << t << ", p = " << pValue

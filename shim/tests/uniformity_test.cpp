@@ -1,14 +1,14 @@
-// ctest-labels: statistical
 // uniformity_test.cpp — every sample of every pattern is uniformly distributed over [0,1)^arity.
 //
 // For each pattern x arity (1, 2, 3) x N (1, 7, 16, 97) one sample index (N/2) is read in 3200 pixels and
 // binned on a 64-cell grid (64, 8x8, 4x4x4 cells; 50 expected per cell). Pearson chi-square, fixed seeds,
 // family-wise alpha = 0.01 Sidak-corrected over the 49 tests (the 49th: the past-the-layout stream).
 #define BOOST_TEST_MODULE uniformity
-#include "chi2.h"
+#include <stipple/testing/statistics.h>
 #include "sampler_fixture.h"
 
 using namespace stipple::test;
+using namespace stipple::testing;
 
 constexpr int kTests = 4 * 3 * 4 + 1;
 

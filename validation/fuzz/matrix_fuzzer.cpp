@@ -3,6 +3,7 @@
 // Expected: a Matrix that keeps the documented invariants, or a MatrixError whose message starts with the file
 // name and a position; any other exception, a crash or a sanitizer report is a finding.
 #include "matrix.h"
+#include "../tests/test_vocabulary.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -22,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = "fuzz/matrix.yaml";
   using namespace stipple::validation;
   try {
-    const Matrix m = parseMatrix(text, path);
+    const Matrix m = parseMatrix(text, path, stipple::validation::test::kVocabulary);
     // What the runner relies on: sample counts ascending, at least one scene and pattern, K >= 4 seeds, checks
     // that name a scene of the matrix (or all).
     require(std::is_sorted(m.spp.begin(), m.spp.end()));

@@ -195,20 +195,34 @@ std::string formatOutcome(const CheckOutcome& o) {
     return s;
 }
 
-std::string outcomesJson(const std::vector<CheckOutcome>& outcomes) {
-    std::ostringstream o;
-    o << "[";
-    for (size_t i = 0; i < outcomes.size(); ++i) {
-        const auto& c = outcomes[i];
-        o << (i ? ",\n" : "\n") << "    {\"type\": " << jsonString(checkTypeName(c.check.type))
-          << ", \"where\": " << jsonString(c.check.where) << ", \"status\": " << jsonString(checkStatusName(c.status))
-          << ", \"fails_run\": " << (c.failsRun ? "true" : "false") << ", \"claim\": " << jsonString(c.claim)
-          << ", \"figures\": [";
-        for (size_t j = 0; j < c.figures.size(); ++j) o << (j ? ", " : "") << jsonString(c.figures[j]);
-        o << "]}";
-    }
-    o << "\n  ]";
-    return o.str();
+const Fields<CheckOutcome>& outcomeFields() {
+    using O = CheckOutcome;
+    auto text = [](const char* name, std::string (*get)(const O&)) {
+        Field<O> f;
+        f.name = name;
+        f.toJson = [get](const O& o) { return Json(get(o)); };
+        f.toCsv = [get](const O& o) { return csvField(get(o)); };
+        return f;
+    };
+    static const Fields<O> fields = {
+        text("type", [](const O& o) { return std::string(checkTypeName(o.check.type)); }),
+        text("where", [](const O& o) { return o.check.where; }),
+        text("status", [](const O& o) { return std::string(checkStatusName(o.status)); }),
+        field("fails_run", &O::failsRun),
+        field("claim", &O::claim),
+        {"figures", [](const O& o) { return Json(o.figures); }, {}, [](const O& o) {
+             std::string all;
+             for (const auto& f : o.figures) all += (all.empty() ? "" : "; ") + f;
+             return csvField(all);
+         }},
+    };
+    return fields;
+}
+
+Json outcomesJson(const std::vector<CheckOutcome>& outcomes) {
+    Json a = Json::array();
+    for (const auto& o : outcomes) a.push_back(toJson(o, outcomeFields()));
+    return a;
 }
 
 } // namespace stipple::validation

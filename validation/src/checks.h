@@ -25,6 +25,8 @@ std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector
 
 // "PASS  ordering cornell-box spp ≥ 64: stratified < independent" followed by indented figures.
 std::string formatOutcome(const CheckOutcome& outcome);
-std::string outcomesJson(const std::vector<CheckOutcome>& outcomes);
+// The fields of an outcome in results.json's "checks" (written only).
+const Fields<CheckOutcome>& outcomeFields();
+Json outcomesJson(const std::vector<CheckOutcome>& outcomes);
 
 } // namespace stipple::validation

@@ -6,16 +6,14 @@
 #include <set>
 #include <sstream>
 
-#include <yaml-cpp/yaml.h>
+#include <stipple/yaml/strict_yaml.h>
+
+#include <limits>
+#include <type_traits>
 
 namespace stipple::validation {
 
 namespace fs = std::filesystem;
-
-const std::vector<std::string>& knownPatterns() {
-    static const std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed"};
-    return patterns;
-}
 
 const char* checkTypeName(CheckType type) {
     switch (type) {
@@ -41,17 +39,13 @@ std::string joined(const std::vector<std::string>& names) {
     return s;
 }
 
-// Parsing context: the file name for messages.
+// Parsing context: the strict YAML reader of the file (positions, keys, numbers) and the names it may use.
 struct Parser {
-    std::string file;
+    yaml::StrictYaml yaml;
+    const MatrixVocabulary& vocabulary;
 
-    std::string at(const YAML::Node& node) const {
-        const YAML::Mark m = node.Mark();
-        if (m.line < 0) return file;
-        return file + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
-    }
     [[noreturn]] void fail(const YAML::Node& node, const std::string& what) const {
-        throw MatrixError(at(node) + ": " + what);
+        throw MatrixError(yaml.where(node) + ": " + what);
     }
 
     void expectMap(const YAML::Node& node, const std::string& what) const {
@@ -59,20 +53,27 @@ struct Parser {
     }
     // Unknown keys are errors: a typo must not silently become a default.
     void onlyKeys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what) const {
-        for (const auto& kv : map) {
-            // A complex key ("? [a, b]" or "? {a: b}") has no string form: as<std::string>() would throw.
-            if (!kv.first.IsScalar()) fail(kv.first, "keys in " + what + " must be plain names");
-            auto key = kv.first.as<std::string>();
-            if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-                fail(kv.first, "unknown key '" + key + "' in " + what + " (allowed: " + joined(allowed) + ")");
+        try {
+            yaml.onlyKeys(map, allowed, what);
+        } catch (const yaml::Error& e) {
+            throw MatrixError(e.what());
         }
     }
     template <typename T> T get(const YAML::Node& node, const std::string& what) const {
         if (!node.IsScalar()) fail(node, what + " must be a scalar");
-        try {
-            return node.as<T>();
-        } catch (const YAML::Exception&) {
-            fail(node, "cannot read " + what + " from '" + node.Scalar() + "'");
+        if constexpr (std::is_same_v<T, std::string>) {
+            return node.Scalar();
+        } else if constexpr (std::is_floating_point_v<T>) {
+            double v = 0;
+            if (yaml::StrictYaml::parseNumber(node, v) != yaml::StrictYaml::Number::Ok)
+                fail(node, "cannot read " + what + " from '" + node.Scalar() + "'");
+            return T(v);
+        } else {
+            long long v = 0;
+            if (!yaml::StrictYaml::parseInteger(node, v) || v < (long long)std::numeric_limits<T>::min() ||
+                (v > 0 && (unsigned long long)v > (unsigned long long)std::numeric_limits<T>::max()))
+                fail(node, "cannot read " + what + " from '" + node.Scalar() + "'");
+            return T(v);
         }
     }
     double positive(const YAML::Node& node, const std::string& what) const {
@@ -92,7 +93,7 @@ struct Parser {
     }
     std::string pattern(const YAML::Node& node) const {
         auto p = get<std::string>(node, "pattern");
-        const auto& known = knownPatterns();
+        const auto& known = vocabulary.patterns;
         if (std::find(known.begin(), known.end(), p) == known.end())
             fail(node, "unknown pattern '" + p + "' (known: " + joined(known) + ")");
         return p;
@@ -104,37 +105,10 @@ struct Parser {
     }
 };
 
-} // namespace
+// ---- the sections of a matrix, each read into m ------------------------------------------------------------------
 
-Matrix parseMatrix(const std::string& text, const std::string& path) {
-    Parser P{path};
-    YAML::Node root;
-    try {
-        root = YAML::Load(text);
-    } catch (const YAML::ParserException& e) {
-        throw MatrixError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                          ": " + e.msg);
-    }
-    if (!root || !root.IsMap()) throw MatrixError(path + ":1:1: a matrix must be a YAML map");
-    const YAML::Node& croot = root;
-    P.onlyKeys(croot, {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop",
-                       "baseline", "checks"},
-               "the matrix");
-
-    Matrix m;
-    m.path = path;
-    m.text = text;
-    const fs::path base = fs::path(path).parent_path();
+void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base, Matrix& m) {
     auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
-
-    m.name = croot["name"] ? P.get<std::string>(croot["name"], "name") : fs::path(path).stem().string();
-    if (croot["cache"]) m.cacheDir = resolve(P.get<std::string>(croot["cache"], "cache"));
-    if (croot["threads"]) {
-        m.threads = P.get<int>(croot["threads"], "threads");
-        if (m.threads < 0) P.fail(croot["threads"], "threads must be ≥ 0 (0: all hardware threads)");
-    }
-
-    // scenes
     const YAML::Node scenes = P.required(croot, "scenes", "the matrix");
     if (!scenes.IsSequence() || scenes.size() == 0) P.fail(scenes, "scenes must be a non-empty list");
     for (const auto& s : scenes) {
@@ -150,8 +124,9 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
             if (s["height"]) ms.height = P.dimension(s["height"], "height");
             if (s["integrator"]) {
                 ms.integrator = P.get<std::string>(s["integrator"], "integrator");
-                if (ms.integrator != "path" && ms.integrator != "direct" && ms.integrator != "bdpt")
-                    P.fail(s["integrator"], "unknown integrator '" + ms.integrator + "' (known: path, direct, bdpt)");
+                const auto& known = P.vocabulary.integrators;
+                if (std::find(known.begin(), known.end(), ms.integrator) == known.end())
+                    P.fail(s["integrator"], "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
             }
             if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
             if (s["max_depth"]) {
@@ -168,7 +143,9 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         m.scenes.push_back(ms);
     }
 
-    // patterns
+}
+
+void parsePatterns(const Parser& P, const YAML::Node& croot, Matrix& m) {
     const YAML::Node patterns = P.required(croot, "patterns", "the matrix");
     if (!patterns.IsSequence() || patterns.size() == 0) P.fail(patterns, "patterns must be a non-empty list");
     for (const auto& p : patterns) {
@@ -178,7 +155,9 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         m.patterns.push_back(name);
     }
 
-    // spp
+}
+
+void parseSpp(const Parser& P, const YAML::Node& croot, Matrix& m) {
     const YAML::Node spp = P.required(croot, "spp", "the matrix");
     if (spp.IsScalar()) m.spp.push_back(P.spp(spp, "spp"));
     else if (spp.IsSequence() && spp.size() > 0)
@@ -187,7 +166,10 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
     std::sort(m.spp.begin(), m.spp.end());
     if (std::adjacent_find(m.spp.begin(), m.spp.end()) != m.spp.end()) P.fail(spp, "spp lists a value twice");
 
-    // seeds: K or an explicit list
+}
+
+// K (seeds 1..K) or an explicit list.
+void parseSeeds(const Parser& P, const YAML::Node& croot, Matrix& m) {
     const YAML::Node seeds = P.required(croot, "seeds", "the matrix");
     if (seeds.IsScalar()) {
         long long k = P.get<long long>(seeds, "seeds");
@@ -204,7 +186,11 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         if (m.seeds.size() < 4) P.fail(seeds, "seeds must list at least 4 values (K ≥ 4 for an interval)");
     } else P.fail(seeds, "seeds must be a count or a list of seeds");
 
-    // reference
+}
+
+// The reference's settings, and its spp against the cells' (per scene too).
+void parseReference(const Parser& P, const YAML::Node& croot, Matrix& m) {
+    const YAML::Node scenes = croot["scenes"];
     if (const YAML::Node r = croot["reference"]) {
         P.expectMap(r, "reference");
         P.onlyKeys(r, {"pattern", "spp", "seed"}, "reference");
@@ -223,7 +209,9 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
                "reference spp (" + std::to_string(m.reference.spp) + ") must be ≥ 4× the largest cell spp (" +
                    std::to_string(m.spp.back()) + ")");
 
-    // crop
+}
+
+void parseCrop(const Parser& P, const YAML::Node& croot, Matrix& m) {
     if (const YAML::Node c = croot["crop"]) {
         P.expectMap(c, "crop");
         P.onlyKeys(c, {"x", "y", "size", "scale", "spp"}, "crop");
@@ -243,13 +231,18 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         }
     }
 
+}
+
+void parseBaseline(const Parser& P, const YAML::Node& croot, Matrix& m) {
     if (const YAML::Node b = croot["baseline"]) {
         P.expectMap(b, "baseline");
         P.onlyKeys(b, {"time_factor"}, "baseline");
         if (b["time_factor"]) m.baselineTimeFactor = P.positive(b["time_factor"], "time_factor");
     }
 
-    // checks
+}
+
+void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
     auto sceneRef = [&](const YAML::Node& n, bool allowAll) {
         auto s = P.get<std::string>(n, "scene");
         if (allowAll && s == "all") return s;
@@ -277,7 +270,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         for (const auto& c : checks) {
             P.expectMap(c, "a check");
             Check k;
-            k.where = P.at(c);
+            k.where = P.yaml.where(c);
             auto type = P.get<std::string>(P.required(c, "type", "a check"), "check type");
             if (type == "ordering") {
                 k.type = CheckType::Ordering;
@@ -321,15 +314,54 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
             m.checks.push_back(k);
         }
     }
+}
+
+} // namespace
+
+Matrix parseMatrix(const std::string& text, const std::string& path, const MatrixVocabulary& vocabulary) {
+    Parser P{yaml::StrictYaml(path), vocabulary};
+    YAML::Node root;
+    try {
+        root = P.yaml.parse(text);
+    } catch (const yaml::Error& e) {
+        throw MatrixError(e.what());
+    }
+    if (!root || !root.IsMap()) throw MatrixError(path + ":1:1: a matrix must be a YAML map");
+    const YAML::Node& croot = root;
+    P.onlyKeys(croot, {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop",
+                       "baseline", "checks"},
+               "the matrix");
+
+    Matrix m;
+    m.path = path;
+    m.text = text;
+    const fs::path base = fs::path(path).parent_path();
+    auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
+
+    m.name = croot["name"] ? P.get<std::string>(croot["name"], "name") : fs::path(path).stem().string();
+    if (croot["cache"]) m.cacheDir = resolve(P.get<std::string>(croot["cache"], "cache"));
+    if (croot["threads"]) {
+        m.threads = P.get<int>(croot["threads"], "threads");
+        if (m.threads < 0) P.fail(croot["threads"], "threads must be ≥ 0 (0: all hardware threads)");
+    }
+
+    parseScenes(P, croot, base, m);
+    parsePatterns(P, croot, m);
+    parseSpp(P, croot, m);
+    parseSeeds(P, croot, m);
+    parseReference(P, croot, m);
+    parseCrop(P, croot, m);
+    parseBaseline(P, croot, m);
+    parseChecks(P, croot, m);
     return m;
 }
 
-Matrix loadMatrix(const std::string& path) {
+Matrix loadMatrix(const std::string& path, const MatrixVocabulary& vocabulary) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw MatrixError(path + ": cannot open the matrix file");
     std::stringstream ss;
     ss << in.rdbuf();
-    return parseMatrix(ss.str(), path);
+    return parseMatrix(ss.str(), path, vocabulary);
 }
 
 } // namespace stipple::validation

@@ -77,12 +77,16 @@ struct Matrix {
     const MatrixScene* findScene(const std::string& name) const;
 };
 
-const std::vector<std::string>& knownPatterns();
+// The names a matrix may use, taken from their owners: the shim's patterns (render::patternNames) and the
+// renderer's integrator registry (render::integratorNames).
+struct MatrixVocabulary {
+    std::vector<std::string> patterns, integrators;
+};
 
 // Reads and validates a matrix file. Throws MatrixError("file:line:column: what").
-Matrix loadMatrix(const std::string& path);
+Matrix loadMatrix(const std::string& path, const MatrixVocabulary& vocabulary);
 // Same, from text; `path` names it in errors and relative paths resolve against its folder.
-Matrix parseMatrix(const std::string& text, const std::string& path);
+Matrix parseMatrix(const std::string& text, const std::string& path, const MatrixVocabulary& vocabulary);
 
 const char* checkTypeName(CheckType type);
 

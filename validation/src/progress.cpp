@@ -1,5 +1,7 @@
 #include "progress.h"
 
+#include <stipple/render/progress_bar.h>
+
 #include <cstdio>
 #include <unistd.h>
 
@@ -19,12 +21,8 @@ std::string Progress::eta() const {
 void Progress::step(const std::string& what) {
     ++done_;
     if (tty_) {
-        const int width = 30;
-        int filled = total_ ? int(double(done_) / double(total_) * width) : width;
-        std::string bar(size_t(filled), '#');
-        bar.resize(width, '.');
-        std::fprintf(stderr, "\r\033[K[%s] %zu/%zu cells, ETA %s  %.60s", bar.c_str(), done_, total_, eta().c_str(),
-                     what.c_str());
+        std::fprintf(stderr, "\r\033[K%s %zu/%zu cells, ETA %s  %.60s", render::progressBar(done_, total_).c_str(),
+                     done_, total_, eta().c_str(), what.c_str());
         barShown_ = true;
     } else {
         std::fprintf(stderr, "[%zu/%zu] %s (ETA %s)\n", done_, total_, what.c_str(), eta().c_str());

@@ -1,5 +1,7 @@
 #include "reference_cache.h"
 
+#include <stipple/render/content_hash.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -8,6 +10,7 @@
 #include "file_lock.h"
 #include "image_metrics.h"
 #include "report.h"
+#include "fields.h"
 #include "results.h"
 
 namespace stipple::validation {
@@ -15,25 +18,58 @@ namespace stipple::validation {
 namespace fs = std::filesystem;
 
 namespace {
-uint64_t fnv1a(const std::string& s) {
-    uint64_t h = 1469598103934665603ull;
-    for (unsigned char c : s) {
-        h ^= c;
-        h *= 1099511628211ull;
-    }
-    return h;
+
+// What the cache's .json beside each reference records: how it was made.
+struct Provenance {
+    std::string key, scene, sceneFile, contentHash, rendererVersion, renderer;
+    int width = 0, height = 0;
+    std::string pattern;
+    uint32_t spp = 0;
+    int halves = 2;
+    uint64_t seed = 0;
+    std::string integrator;
+    int maxDepth = 0;
+    double renderSeconds = 0;
+    uint64_t nonFiniteSamples = 0;
+    double noiseFloor = 0;
+    std::string layout, created;
+};
+
+const Fields<Provenance>& provenanceFields() {
+    using P = Provenance;
+    static const Fields<P> fields = {
+        field("key", &P::key),
+        field("scene", &P::scene),
+        field("scene_file", &P::sceneFile),
+        field("content_hash", &P::contentHash),
+        field("renderer_version", &P::rendererVersion),
+        field("renderer", &P::renderer),
+        field("width", &P::width),
+        field("height", &P::height),
+        field("pattern", &P::pattern),
+        field("spp", &P::spp),
+        field("halves", &P::halves),
+        field("seed", &P::seed),
+        field("integrator", &P::integrator),
+        field("max_depth", &P::maxDepth),
+        field("render_seconds", &P::renderSeconds),
+        field("non_finite_samples", &P::nonFiniteSamples),
+        field("noise_floor", &P::noiseFloor),
+        field("layout", &P::layout),
+        field("created", &P::created),
+    };
+    return fields;
 }
+
 } // namespace
 
 std::string referenceKey(const render::Scene& scene, const render::RenderOptions& o) {
-    std::string material = scene.contentHash() + "|" + render::rendererVersion() + "|" + render::shimIdentity(o.shim) +
+    std::string material = scene.contentHash() + "|" + render::rendererIdentity() + "|" + render::shimIdentity(o.shim) +
                            "|" + std::to_string(o.width) +
                            "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
                            std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " +
                            std::to_string(o.maxDepth) + "|halves";
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)fnv1a(material));
-    return buf;
+    return render::ContentHash().add(material).hex();
 }
 
 Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
@@ -83,28 +119,34 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
     std::time_t now = std::time(nullptr);
     char when[32];
     std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    std::vector<std::pair<std::string, std::string>> meta = {
-        {"stipple:scene", scene.name()},          {"stipple:contentHash", scene.contentHash()},
-        {"stipple:rendererVersion", render::rendererVersion()},
-        {"stipple:pattern", options.pattern},     {"stipple:spp", std::to_string(options.spp)},
-        {"stipple:seed", std::to_string(options.seed)}, {"stipple:integrator", options.integrator},
-        {"stipple:referenceKey", ref.key}};
+    const render::ImageMetadata meta = {
+        {"scene", scene.name()},           {"content_hash", scene.contentHash()},
+        {"renderer", render::rendererIdentity()},
+        {"pattern", options.pattern},      {"spp", std::to_string(options.spp)},
+        {"seed", std::to_string(options.seed)}, {"integrator", options.integrator},
+        {"max_depth", std::to_string(options.maxDepth)}, {"reference_key", ref.key}};
     render::writeExr(variancePath, ref.variance, meta);
     render::writeExr(ref.imagePath, ref.image, meta);
-    std::string json = "{\n  \"key\": " + jsonString(ref.key) + ",\n  \"scene\": " + jsonString(scene.name()) +
-                       ",\n  \"scene_file\": " + jsonString(sceneFile) +
-                       ",\n  \"content_hash\": " + jsonString(scene.contentHash()) +
-                       ",\n  \"renderer_version\": " + jsonString(render::rendererVersion()) +
-                       ",\n  \"width\": " + std::to_string(options.width) +
-                       ",\n  \"height\": " + std::to_string(options.height) +
-                       ",\n  \"pattern\": " + jsonString(options.pattern) +
-                       ",\n  \"spp\": " + std::to_string(2 * half.spp) + ",\n  \"halves\": 2" + ",\n  \"seed\": " + std::to_string(options.seed) +
-                       ",\n  \"integrator\": " + jsonString(options.integrator) +
-                       ",\n  \"max_depth\": " + std::to_string(options.maxDepth) +
-                       ",\n  \"render_seconds\": " + jsonNumber(r.renderSeconds) +
-                       ",\n  \"non_finite_samples\": " + std::to_string(r.nonFiniteSamples) +
-                       ",\n  \"noise_floor\": " + jsonNumber(noiseFloor(ref.variance)) +
-                       ",\n  \"layout\": " + jsonString(r.layout) + ",\n  \"created\": " + jsonString(when) + "\n}\n";
+    Provenance p;
+    p.key = ref.key;
+    p.scene = scene.name();
+    p.sceneFile = sceneFile;
+    p.contentHash = scene.contentHash();
+    p.rendererVersion = render::rendererVersion();
+    p.renderer = render::rendererIdentity();
+    p.width = options.width;
+    p.height = options.height;
+    p.pattern = options.pattern;
+    p.spp = 2 * half.spp;
+    p.seed = options.seed;
+    p.integrator = options.integrator;
+    p.maxDepth = options.maxDepth;
+    p.renderSeconds = r.renderSeconds;
+    p.nonFiniteSamples = r.nonFiniteSamples;
+    p.noiseFloor = noiseFloor(ref.variance);
+    p.layout = r.layout;
+    p.created = when;
+    const std::string json = toJson(p, provenanceFields()).dump(2) + "\n";
     writeTextFile(provenancePath, json);
     return ref;
 }

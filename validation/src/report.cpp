@@ -7,6 +7,11 @@
 #include <iostream>
 #include <sstream>
 
+#include <cerrno>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 namespace stipple::validation {
 
 namespace fs = std::filesystem;
@@ -40,6 +45,29 @@ std::string gq(const std::string& s) {
     return o + "'";
 }
 
+// Runs `gnuplot plots.gp` in `plotsDir` with stderr to gnuplot.log there, without a shell (any path works).
+// Returns its exit status, or -1 when it could not be started.
+int runGnuplot(const std::string& plotsDir) {
+    const pid_t pid = fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        if (chdir(plotsDir.c_str()) != 0) _exit(126);
+        const int log = open("gnuplot.log", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (log >= 0) dup2(log, STDERR_FILENO);
+        execlp("gnuplot", "gnuplot", "plots.gp", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A number in a gnuplot data file: full precision; gnuplot skips the non-finite "null".
+std::string plotNumber(double v) {
+    return std::isfinite(v) ? fmt("%.17g", v) : std::string("null");
+}
+
 bool writePlots(const std::string& dir, const ReportInputs& in) {
     const Matrix& m = *in.matrix;
     fs::create_directories(fs::path(dir) / "plots");
@@ -56,8 +84,8 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
                 double h = std::isfinite(c.rms.halfWidth) ? c.rms.halfWidth : 0;
                 // Log axes cannot show a lower bound ≤ 0: clamp it to a hundredth of the mean.
                 double lo = std::max(c.rms.mean - h, 0.01 * c.rms.mean);
-                dat << c.spp << " " << jsonNumber(c.rms.mean) << " " << jsonNumber(lo) << " "
-                    << jsonNumber(c.rms.mean + h) << " " << jsonNumber(c.medianRenderSeconds) << "\n";
+                dat << c.spp << " " << plotNumber(c.rms.mean) << " " << plotNumber(lo) << " "
+                    << plotNumber(c.rms.mean + h) << " " << plotNumber(c.medianRenderSeconds) << "\n";
             }
             dat << "\n\n";
         }
@@ -90,8 +118,7 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
     }
     writeTextFile((fs::path(dir) / "plots" / "plots.gp").string(), script);
     // gnuplot runs inside plots/ so the script names files relative to it.
-    std::string cmd = "cd '" + (fs::path(dir) / "plots").string() + "' && gnuplot plots.gp 2> gnuplot.log";
-    int rc = std::system(cmd.c_str());
+    const int rc = runGnuplot((fs::path(dir) / "plots").string());
     if (rc != 0) {
         std::cerr << "stipple-validate: gnuplot failed (exit " << rc << "); see " << dir
                   << "/plots/gnuplot.log. Tables and data are written; plots are missing.\n";

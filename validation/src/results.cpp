@@ -1,4 +1,5 @@
 #include "results.h"
+#include "fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <yaml-cpp/yaml.h>
+#include <stipple/render/temporary_path.h>
 
 namespace stipple::validation {
 
@@ -115,35 +116,15 @@ const CellAggregate* findCell(const std::vector<CellAggregate>& cells, const std
     return nullptr;
 }
 
-std::string jsonString(const std::string& s) {
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
     std::string out = "\"";
-    for (unsigned char ch : s) {
-        switch (ch) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        default:
-            if (ch < 0x20) {
-                char buf[8];
-                std::snprintf(buf, sizeof buf, "\\u%04x", ch);
-                out += buf;
-            } else out += char(ch);
-        }
-    }
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
 }
 
-std::string jsonNumber(double v) {
-    if (!std::isfinite(v)) return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
 void writeTextFile(const std::string& path, const std::string& text) {
-    std::string tmp = path + ".tmp";
+    const std::string tmp = render::temporaryPathFor(path);
     {
         std::ofstream out(tmp, std::ios::binary);
         if (!out) throw std::runtime_error("cannot write " + tmp);
@@ -153,170 +134,164 @@ void writeTextFile(const std::string& path, const std::string& text) {
     std::filesystem::rename(tmp, path);
 }
 
-void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows) {
+// ---- the field lists: JSON (both ways) and CSV come from these -------------------------------------------------
+
+const Fields<ResultRow>& resultRowFields() {
     // Times come last, so a comparison that ignores them can cut the columns before.
-    std::ostringstream o;
-    o << "scene,pattern,spp,seed,width,height,rms,mse,rms_corrected,mse_corrected,floor_limited,"
-         "non_finite_pixels,non_finite_samples,render_seconds,sampler_seconds\n";
-    char buf[512];
-    for (const auto& r : rows) {
-        std::snprintf(buf, sizeof buf, "%s,%s,%u,%llu,%d,%d,%.9g,%.9g,%.9g,%.9g,%d,%llu,%llu,%.6f,%.6f\n",
-                      r.scene.c_str(), r.pattern.c_str(), r.spp, (unsigned long long)r.seed, r.width, r.height, r.rms,
-                      r.mse, r.rmsCorrected, r.mseCorrected, int(r.floorLimited),
-                      (unsigned long long)r.nonFinitePixels, (unsigned long long)r.nonFiniteSamples, r.renderSeconds,
-                      r.samplerSeconds);
-        o << buf;
-    }
-    writeTextFile(path, o.str());
+    static const Fields<ResultRow> fields = {
+        field("scene", &ResultRow::scene, "", true),
+        field("pattern", &ResultRow::pattern, "", true),
+        field("spp", &ResultRow::spp, "", true),
+        field("seed", &ResultRow::seed, "", true),
+        field("width", &ResultRow::width),
+        field("height", &ResultRow::height),
+        field("rms", &ResultRow::rms),
+        field("mse", &ResultRow::mse),
+        field("rms_corrected", &ResultRow::rmsCorrected),
+        field("mse_corrected", &ResultRow::mseCorrected),
+        field("floor_limited", &ResultRow::floorLimited),
+        field("non_finite_pixels", &ResultRow::nonFinitePixels),
+        field("non_finite_samples", &ResultRow::nonFiniteSamples),
+        field("render_seconds", &ResultRow::renderSeconds, "%.6f"),
+        field("sampler_seconds", &ResultRow::samplerSeconds, "%.6f"),
+    };
+    return fields;
+}
+
+const Fields<SceneInfo>& sceneInfoFields() {
+    static const Fields<SceneInfo> fields = {
+        field("name", &SceneInfo::name, "", true),
+        field("file", &SceneInfo::file),
+        field("content_hash", &SceneInfo::contentHash),
+        field("integrator", &SceneInfo::integrator),
+        field("width", &SceneInfo::width),
+        field("height", &SceneInfo::height),
+        field("triangles", &SceneInfo::triangles),
+        field("load_seconds", &SceneInfo::loadSeconds),
+        field("build_seconds", &SceneInfo::buildSeconds),
+        field("warmup_seconds", &SceneInfo::warmupSeconds),
+        field("reference_key", &SceneInfo::referenceKey),
+        field("reference_spp", &SceneInfo::referenceSpp),
+        field("reference_seconds", &SceneInfo::referenceSeconds),
+        field("noise_floor", &SceneInfo::noiseFloor),
+    };
+    return fields;
+}
+
+const Fields<SkippedScene>& skippedSceneFields() {
+    static const Fields<SkippedScene> fields = {field("name", &SkippedScene::name),
+                                                field("error", &SkippedScene::error)};
+    return fields;
+}
+
+const Fields<CellAggregate>& cellFields() {
+    using C = CellAggregate;
+    static const Fields<C> fields = {
+        field("scene", &C::scene),
+        field("pattern", &C::pattern),
+        field("spp", &C::spp),
+        field("seeds", &C::seeds),
+        field<C>("mean_rms", [](C& c) -> double& { return c.rms.mean; }),
+        field<C>("rms_ci95", [](C& c) -> double& { return c.rms.halfWidth; }),
+        field("mean_rms_measured", &C::meanRmsMeasured),
+        field("mean_mse_corrected", &C::meanMseCorrected),
+        field("floor_limited_seeds", &C::floorLimitedSeeds),
+        field("non_finite_pixels", &C::nonFinitePixels),
+        field("efficiency", &C::efficiency, "%.6g"),
+        field("median_render_seconds", &C::medianRenderSeconds, "%.6f"),
+        field("median_sampler_seconds", &C::medianSamplerSeconds, "%.6f"),
+    };
+    return fields;
+}
+
+const Fields<SlopeFit>& slopeFields() {
+    using S = SlopeFit;
+    static const Fields<S> fields = {
+        field("scene", &S::scene),
+        field("pattern", &S::pattern),
+        field<S>("slope", [](S& s) -> double& { return s.fit.slope; }),
+        field<S>("ci95", [](S& s) -> double& { return s.fit.slopeHalfWidth; }),
+        field<S>("points", [](S& s) -> size_t& { return s.fit.count; }),
+        field("excluded", &S::excluded),
+    };
+    return fields;
+}
+
+// ---- writers and the reader ---------------------------------------------------------------------------------------
+
+void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows) {
+    writeTextFile(path, csvTable(rows, resultRowFields()));
 }
 
 void writeCellsCsv(const std::string& path, const std::vector<CellAggregate>& cells) {
-    std::ostringstream o;
-    o << "scene,pattern,spp,seeds,mean_rms,rms_ci95,mean_rms_measured,mean_mse_corrected,floor_limited_seeds,"
-         "non_finite_pixels,efficiency,median_render_seconds,median_sampler_seconds\n";
-    char buf[512];
-    for (const auto& c : cells) {
-        std::snprintf(buf, sizeof buf, "%s,%s,%u,%zu,%.9g,%.9g,%.9g,%.9g,%d,%llu,%.6g,%.6f,%.6f\n", c.scene.c_str(),
-                      c.pattern.c_str(), c.spp, c.seeds, c.rms.mean, c.rms.halfWidth, c.meanRmsMeasured,
-                      c.meanMseCorrected, c.floorLimitedSeeds, (unsigned long long)c.nonFinitePixels, c.efficiency,
-                      c.medianRenderSeconds, c.medianSamplerSeconds);
-        o << buf;
-    }
-    writeTextFile(path, o.str());
-}
-
-void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
-                      const std::vector<SlopeFit>& slopes, const std::string& checksJson) {
-    std::ostringstream o;
-    o << "{\n  \"format\": \"stipple-validate results 1\",\n";
-    o << "  \"matrix\": " << jsonString(results.matrixName) << ",\n";
-    o << "  \"renderer_version\": " << jsonString(results.rendererVersion) << ",\n";
-  if (!results.fingerprint.empty()) o << "  \"fingerprint\": " << fingerprintJson(results.fingerprint) << ",\n";
-    o << "  \"scenes\": [";
-    for (size_t i = 0; i < results.scenes.size(); ++i) {
-        const auto& s = results.scenes[i];
-        o << (i ? ",\n" : "\n") << "    {\"name\": " << jsonString(s.name) << ", \"file\": " << jsonString(s.file)
-          << ", \"content_hash\": " << jsonString(s.contentHash) << ", \"integrator\": " << jsonString(s.integrator)
-          << ", \"width\": " << s.width << ", \"height\": " << s.height << ", \"triangles\": " << s.triangles
-          << ", \"load_seconds\": " << jsonNumber(s.loadSeconds) << ", \"build_seconds\": " << jsonNumber(s.buildSeconds)
-          << ", \"warmup_seconds\": " << jsonNumber(s.warmupSeconds)
-          << ", \"reference_key\": " << jsonString(s.referenceKey) << ", \"reference_spp\": " << s.referenceSpp
-          << ", \"reference_seconds\": " << jsonNumber(s.referenceSeconds)
-          << ", \"noise_floor\": " << jsonNumber(s.noiseFloor) << "}";
-    }
-    o << "\n  ],\n  \"skipped_scenes\": [";
-    for (size_t i = 0; i < results.skipped.size(); ++i)
-        o << (i ? ",\n" : "\n") << "    {\"name\": " << jsonString(results.skipped[i].name)
-          << ", \"error\": " << jsonString(results.skipped[i].error) << "}";
-    o << "\n  ],\n  \"rows\": [";
-    for (size_t i = 0; i < results.rows.size(); ++i) {
-        const auto& r = results.rows[i];
-        o << (i ? ",\n" : "\n") << "    {\"scene\": " << jsonString(r.scene) << ", \"pattern\": " << jsonString(r.pattern)
-          << ", \"spp\": " << r.spp << ", \"seed\": " << r.seed << ", \"width\": " << r.width
-          << ", \"height\": " << r.height << ", \"rms\": " << jsonNumber(r.rms) << ", \"mse\": " << jsonNumber(r.mse)
-          << ", \"rms_corrected\": " << jsonNumber(r.rmsCorrected)
-          << ", \"mse_corrected\": " << jsonNumber(r.mseCorrected)
-          << ", \"floor_limited\": " << (r.floorLimited ? "true" : "false")
-          << ", \"non_finite_pixels\": " << r.nonFinitePixels << ", \"non_finite_samples\": " << r.nonFiniteSamples
-          << ", \"render_seconds\": " << jsonNumber(r.renderSeconds)
-          << ", \"sampler_seconds\": " << jsonNumber(r.samplerSeconds) << "}";
-    }
-    o << "\n  ],\n  \"cells\": [";
-    for (size_t i = 0; i < cells.size(); ++i) {
-        const auto& c = cells[i];
-        o << (i ? ",\n" : "\n") << "    {\"scene\": " << jsonString(c.scene) << ", \"pattern\": " << jsonString(c.pattern)
-          << ", \"spp\": " << c.spp << ", \"seeds\": " << c.seeds << ", \"mean_rms\": " << jsonNumber(c.rms.mean)
-          << ", \"rms_ci95\": " << jsonNumber(c.rms.halfWidth)
-          << ", \"mean_rms_measured\": " << jsonNumber(c.meanRmsMeasured)
-          << ", \"mean_mse_corrected\": " << jsonNumber(c.meanMseCorrected)
-          << ", \"median_render_seconds\": " << jsonNumber(c.medianRenderSeconds)
-          << ", \"median_sampler_seconds\": " << jsonNumber(c.medianSamplerSeconds)
-          << ", \"efficiency\": " << jsonNumber(c.efficiency) << ", \"floor_limited_seeds\": " << c.floorLimitedSeeds
-          << ", \"non_finite_pixels\": " << c.nonFinitePixels << "}";
-    }
-    o << "\n  ],\n  \"slopes\": [";
-    for (size_t i = 0; i < slopes.size(); ++i) {
-        const auto& s = slopes[i];
-        o << (i ? ",\n" : "\n") << "    {\"scene\": " << jsonString(s.scene) << ", \"pattern\": " << jsonString(s.pattern)
-          << ", \"slope\": " << jsonNumber(s.fit.slope) << ", \"ci95\": " << jsonNumber(s.fit.slopeHalfWidth)
-          << ", \"points\": " << s.fit.count << ", \"excluded\": " << s.excluded << "}";
-    }
-    o << "\n  ],\n  \"checks\": " << (checksJson.empty() ? "[]" : checksJson) << "\n}\n";
-    writeTextFile(path, o.str());
+    writeTextFile(path, csvTable(cells, cellFields()));
 }
 
 namespace {
-// JSON is read through yaml-cpp (JSON is YAML's flow style); null numbers come back as NaN.
-double number(const YAML::Node& n) {
-    if (!n || n.IsNull()) return std::numeric_limits<double>::quiet_NaN();
-    return n.as<double>();
+
+constexpr const char* kResultsFormat = "stipple-validate results 1";
+
+template <class Record>
+Json toJsonArray(const std::vector<Record>& records, const Fields<Record>& fields) {
+    Json a = Json::array();
+    for (const auto& r : records) a.push_back(toJson(r, fields));
+    return a;
 }
+
+template <class Record>
+std::vector<Record> fromJsonArray(const Json& root, const char* key, const Fields<Record>& fields,
+                                  const std::string& path) {
+    std::vector<Record> records;
+    auto it = root.find(key);
+    if (it == root.end() || it->is_null()) return records; // e.g. skipped_scenes, absent in older files
+    if (!it->is_array()) throw std::runtime_error(path + ": malformed results.json: '" + key + "' is not an array");
+    for (size_t i = 0; i < it->size(); ++i)
+        records.push_back(
+            fromJson((*it)[i], fields, path + ": malformed results.json: " + key + "[" + std::to_string(i) + "]"));
+    return records;
+}
+
 } // namespace
 
+void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
+                      const std::vector<SlopeFit>& slopes, const Json& checks) {
+    Json root = Json::object();
+    root["format"] = kResultsFormat;
+    root["matrix"] = results.matrixName;
+    root["renderer_version"] = results.rendererVersion;
+    if (!results.fingerprint.empty()) root["fingerprint"] = Json::parse(fingerprintJson(results.fingerprint));
+    root["scenes"] = toJsonArray(results.scenes, sceneInfoFields());
+    root["skipped_scenes"] = toJsonArray(results.skipped, skippedSceneFields());
+    root["rows"] = toJsonArray(results.rows, resultRowFields());
+    root["cells"] = toJsonArray(cells, cellFields());
+    root["slopes"] = toJsonArray(slopes, slopeFields());
+    root["checks"] = checks.is_null() ? Json::array() : checks;
+    writeTextFile(path, root.dump(2) + "\n");
+}
+
 Results readResultsJson(const std::string& path) {
-    YAML::Node root;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot open results file");
+    Json root;
     try {
-        root = YAML::LoadFile(path);
-    } catch (const YAML::BadFile&) {
-        throw std::runtime_error(path + ": cannot open results file");
-    } catch (const YAML::ParserException& e) {
-        throw std::runtime_error(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                                 ": " + e.msg);
+        root = Json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw std::runtime_error(path + ": " + e.what()); // names the line and column
     }
+    if (!root.is_object() || !root.contains("format") || root["format"] != kResultsFormat)
+        throw std::runtime_error(path + ": not a stipple-validate results.json (no format \"" +
+                                 std::string(kResultsFormat) + "\")");
     Results r;
-    const YAML::Node& c = root;
     try {
-        if (!c.IsMap() || !c["format"] || c["format"].as<std::string>() != "stipple-validate results 1")
-            throw std::runtime_error(path + ": not a stipple-validate results.json (no format \"stipple-validate results 1\")");
-        r.matrixName = c["matrix"].as<std::string>("");
-        r.rendererVersion = c["renderer_version"].as<std::string>("");
-        r.fingerprint = readFingerprint(path);
-        for (const auto& s : c["scenes"]) {
-            SceneInfo i;
-            i.name = s["name"].as<std::string>();
-            i.file = s["file"].as<std::string>("");
-            i.contentHash = s["content_hash"].as<std::string>("");
-            i.integrator = s["integrator"].as<std::string>("");
-            i.width = s["width"].as<int>(0);
-            i.height = s["height"].as<int>(0);
-            i.triangles = s["triangles"].as<uint64_t>(0);
-            i.loadSeconds = number(s["load_seconds"]);
-            i.buildSeconds = number(s["build_seconds"]);
-            i.warmupSeconds = number(s["warmup_seconds"]);
-            i.referenceKey = s["reference_key"].as<std::string>("");
-            i.referenceSpp = s["reference_spp"].as<uint32_t>(0);
-            i.referenceSeconds = number(s["reference_seconds"]);
-            i.noiseFloor = number(s["noise_floor"]);
-            r.scenes.push_back(i);
-        }
-        for (const auto& s : c["skipped_scenes"]) {  // absent in files of older versions
-            r.skipped.push_back({s["name"].as<std::string>(""), s["error"].as<std::string>("")});
-        }
-        for (const auto& n : c["rows"]) {
-            ResultRow row;
-            row.scene = n["scene"].as<std::string>();
-            row.pattern = n["pattern"].as<std::string>();
-            row.spp = n["spp"].as<uint32_t>();
-            row.seed = n["seed"].as<uint64_t>();
-            row.width = n["width"].as<int>(0);
-            row.height = n["height"].as<int>(0);
-            row.rms = number(n["rms"]);
-            row.mse = number(n["mse"]);
-            row.rmsCorrected = number(n["rms_corrected"]);
-            row.mseCorrected = number(n["mse_corrected"]);
-            row.floorLimited = n["floor_limited"].as<bool>(false);
-            row.nonFinitePixels = n["non_finite_pixels"].as<uint64_t>(0);
-            row.nonFiniteSamples = n["non_finite_samples"].as<uint64_t>(0);
-            row.renderSeconds = number(n["render_seconds"]);
-            row.samplerSeconds = number(n["sampler_seconds"]);
-            r.rows.push_back(row);
-        }
-    } catch (const YAML::Exception& e) {
-        std::string where = e.mark.line >= 0 ? ":" + std::to_string(e.mark.line + 1) + ":" +
-                                                   std::to_string(e.mark.column + 1)
-                                             : "";
-        throw std::runtime_error(path + where + ": malformed results.json: " + e.msg);
+        r.matrixName = root.value("matrix", "");
+        r.rendererVersion = root.value("renderer_version", "");
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(path + ": malformed results.json: " + e.what());
     }
+    r.fingerprint = readFingerprint(path);
+    r.scenes = fromJsonArray(root, "scenes", sceneInfoFields(), path);
+    r.skipped = fromJsonArray(root, "skipped_scenes", skippedSceneFields(), path);
+    r.rows = fromJsonArray(root, "rows", resultRowFields(), path);
     return r;
 }
 

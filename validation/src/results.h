@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fields.h"
 #include "matrix.h"
 #include "shard_fingerprint.h"
 #include "statistics.h"
@@ -82,19 +83,24 @@ std::vector<SlopeFit> fitSlopes(const std::vector<ResultRow>& rows, const Matrix
 const CellAggregate* findCell(const std::vector<CellAggregate>& cells, const std::string& scene,
                               const std::string& pattern, uint32_t spp);
 
+// The field lists behind results.json and the CSV files (one per record type).
+const Fields<ResultRow>& resultRowFields();
+const Fields<SceneInfo>& sceneInfoFields();
+const Fields<SkippedScene>& skippedSceneFields();
+const Fields<CellAggregate>& cellFields();
+const Fields<SlopeFit>& slopeFields();
+
 void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows);
 // The per-cell aggregates: mean RMS with its 95% half width, medians, efficiency.
 void writeCellsCsv(const std::string& path, const std::vector<CellAggregate>& cells);
-// Writes everything: rows, scenes, aggregates, slopes; `extraJson` (a JSON value) goes under "checks".
+// Writes everything: rows, scenes, aggregates, slopes; `checks` (a JSON array) goes under "checks".
 void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
-                      const std::vector<SlopeFit>& slopes, const std::string& checksJson);
-// Reads the rows and scenes back. Throws std::runtime_error naming the file (and line:column) on bad input.
+                      const std::vector<SlopeFit>& slopes, const Json& checks);
+// Reads the rows and scenes back (files of format "stipple-validate results 1"). Throws std::runtime_error
+// naming the file (and line:column, or the record and field) on bad input.
 Results readResultsJson(const std::string& path);
 
-// Helpers shared by the report writers.
-std::string jsonString(const std::string& s);
-std::string jsonNumber(double v);
-// Writes `text` to `path` through a temporary file renamed into place.
+// Writes `text` to `path` through a temporary file (render::temporaryPathFor) renamed into place.
 void writeTextFile(const std::string& path, const std::string& text);
 
 } // namespace stipple::validation

@@ -5,13 +5,14 @@
 namespace stipple::validation {
 
 render::RenderOptions resolveRenderOptions(const MatrixScene& ms, const render::Scene& scene, int threads) {
+    // The matrix's overrides; the renderer fills in the scene's defaults (integrator, size, depth).
     render::RenderOptions o;
-    o.width = ms.width ? ms.width : scene.defaultWidth();
-    o.height = ms.height ? ms.height : scene.defaultHeight();
-    o.integrator = ms.integrator.empty() ? scene.defaultIntegrator() : ms.integrator;
+    o.width = ms.width;
+    o.height = ms.height;
+    o.integrator = ms.integrator;
     o.maxDepth = ms.maxDepth;
     o.threads = threads;
-    return o;
+    return scene.resolve(o);
 }
 
 SceneFingerprint describeScene(const MatrixScene& ms, const render::Scene& scene, const render::RenderOptions& base,
@@ -22,7 +23,7 @@ SceneFingerprint describeScene(const MatrixScene& ms, const render::Scene& scene
     s.width = base.width;
     s.height = base.height;
     s.integrator = base.integrator;
-    s.maxDepth = ms.maxDepth >= 0 ? ms.maxDepth : scene.defaultMaxDepth();
+    s.maxDepth = base.maxDepth;
     s.referenceSpp = referenceSpp;
     return s;
 }

@@ -49,6 +49,46 @@ void writeCrop(const std::string& reportDir, const std::string& scene, const std
                      cropImage(image, x, y, size, size, crop.scale));
 }
 
+// Untimed warm-up: a tiny render per pattern × spp fills whatever the sampler caches per N, so the timed cells
+// measure steady state. Returns its seconds (reported per scene).
+double warmUp(const render::Scene& scene, const render::RenderOptions& base, const Matrix& m) {
+    const auto start = Clock::now();
+    for (uint32_t spp : m.spp)
+        for (const auto& pattern : m.patterns) {
+            render::RenderOptions o = base;
+            o.pattern = pattern;
+            o.spp = spp;
+            o.seed = 0x5eed;
+            o.width = std::min(base.width, 8);
+            o.height = std::min(base.height, 8);
+            scene.render(o);
+        }
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One cell × seed: its render against the reference, the reference's noise floor removed.
+ResultRow measureRow(const std::string& scene, const render::RenderOptions& o, const render::RenderResult& r,
+                     const Reference& ref, double noiseFloor) {
+    const ImageError e = compareImages(ref.image, r.image);
+    ResultRow row;
+    row.scene = scene;
+    row.pattern = o.pattern;
+    row.spp = o.spp;
+    row.seed = o.seed;
+    row.width = r.image.width;
+    row.height = r.image.height;
+    row.mse = e.mse;
+    row.rms = e.rms;
+    row.mseCorrected = correctedMse(e.mse, noiseFloor);
+    row.rmsCorrected = std::sqrt(row.mseCorrected);
+    row.floorLimited = floorLimited(row.mseCorrected, noiseFloor);
+    row.nonFinitePixels = e.nonFinitePixels;
+    row.nonFiniteSamples = r.nonFiniteSamples;
+    row.renderSeconds = r.renderSeconds;
+    row.samplerSeconds = r.samplerSeconds;
+    return row;
+}
+
 } // namespace
 
 Results runMatrix(const Matrix& m, const RunOptions& opt) {
@@ -115,20 +155,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             }
             writeCrop(opt.reportDir, ms.name, "reference", ref.image, m.crop);
 
-            // Untimed warm-up: a tiny render per pattern × spp fills whatever the sampler caches per N, so the
-            // timed cells measure steady state. Its cost is reported per scene.
-            auto warm = Clock::now();
-            for (uint32_t spp : m.spp)
-                for (const auto& pattern : m.patterns) {
-                    render::RenderOptions o = base;
-                    o.pattern = pattern;
-                    o.spp = spp;
-                    o.seed = 0x5eed;
-                    o.width = std::min(base.width, 8);
-                    o.height = std::min(base.height, 8);
-                    scene->render(o);
-                }
-            info.warmupSeconds = std::chrono::duration<double>(Clock::now() - warm).count();
+            info.warmupSeconds = warmUp(*scene, base, m);
 
             for (size_t gi = 0; gi < mine.size(); ++gi) {
                 const CellGroup& g = mine[gi];
@@ -140,23 +167,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     o.spp = g.spp;
                     o.seed = g.seed;
                     render::RenderResult r = scene->render(o);
-                    ImageError e = compareImages(ref.image, r.image);
-                    ResultRow row;
-                    row.scene = ms.name;
-                    row.pattern = pattern;
-                    row.spp = g.spp;
-                    row.seed = g.seed;
-                    row.width = r.image.width;
-                    row.height = r.image.height;
-                    row.mse = e.mse;
-                    row.rms = e.rms;
-                    row.mseCorrected = correctedMse(e.mse, info.noiseFloor);
-                    row.rmsCorrected = std::sqrt(row.mseCorrected);
-                    row.floorLimited = floorLimited(row.mseCorrected, info.noiseFloor);
-                    row.nonFinitePixels = e.nonFinitePixels;
-                    row.nonFiniteSamples = r.nonFiniteSamples;
-                    row.renderSeconds = r.renderSeconds;
-                    row.samplerSeconds = r.samplerSeconds;
+                    const ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
                     results.rows.push_back(row);
                     if (g.spp == cropSpp && g.seed == m.seeds.front()) writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
                     progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),

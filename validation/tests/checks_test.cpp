@@ -12,6 +12,7 @@
 #include "baseline.h"
 #include "checks.h"
 #include "report.h"
+#include "test_vocabulary.h"
 
 using namespace stipple::validation;
 namespace fs = std::filesystem;
@@ -39,7 +40,7 @@ checks:
   - { type: time_ratio, numerator: independent, denominator: stratified, max: 1.05 }
   - { type: time_ceiling, seconds: 1.5 }
 )";
-        matrix = loadMatrix((dir / "m.yaml").string());
+        matrix = loadMatrix((dir / "m.yaml").string(), test::kVocabulary);
     }
     ~Fixture() { fs::remove_all(dir); }
 };
@@ -163,7 +164,7 @@ BOOST_AUTO_TEST_CASE(results_json_round_trips_and_baseline_compares) {
     r.skipped = {{"broken", "broken.yaml:3:1: key 'shapez': unknown key"}};
     auto cells = aggregate(r.rows);
     std::string path = (f.dir / "results.json").string();
-    writeResultsJson(path, r, cells, fitSlopes(r.rows, f.matrix), "[]");
+    writeResultsJson(path, r, cells, fitSlopes(r.rows, f.matrix), Json::array());
     Results back = readResultsJson(path);
     BOOST_CHECK_EQUAL(back.rendererVersion, "test \"1\"");
     BOOST_REQUIRE_EQUAL(back.rows.size(), r.rows.size());
@@ -187,4 +188,46 @@ BOOST_AUTO_TEST_CASE(results_json_round_trips_and_baseline_compares) {
     BOOST_CHECK(!compareToBaseline(aggregate(slower), cells, 2.5).failed);
 
     BOOST_CHECK_THROW(readResultsJson((f.dir / "m.yaml").string()), std::runtime_error);
+}
+
+BOOST_AUTO_TEST_CASE(results_json_of_the_hand_written_format_reads) {
+    // A file as the writer before the field lists made it (same format tag): %.17g numbers, null for NaN,
+    // one object per line, no skipped_scenes.
+    Fixture f;
+    const std::string path = (f.dir / "old.json").string();
+    std::ofstream(path) << "{\n  \"format\": \"stipple-validate results 1\",\n  \"matrix\": \"quick\",\n"
+                           "  \"renderer_version\": \"stipple-render 1.0.0\",\n  \"scenes\": [\n"
+                           "    {\"name\": \"box\", \"file\": \"box.yaml\", \"width\": 64, \"height\": 64, "
+                           "\"noise_floor\": 2.5000000000000001e-05}\n  ],\n  \"rows\": [\n"
+                           "    {\"scene\": \"box\", \"pattern\": \"independent\", \"spp\": 4, \"seed\": 1, "
+                           "\"rms\": 0.10000000000000001, \"mse\": null, \"floor_limited\": true}\n  ],\n"
+                           "  \"cells\": [],\n  \"slopes\": [],\n  \"checks\": []\n}\n";
+    const Results r = readResultsJson(path);
+    BOOST_CHECK_EQUAL(r.matrixName, "quick");
+    BOOST_REQUIRE_EQUAL(r.rows.size(), 1u);
+    BOOST_CHECK_EQUAL(r.rows[0].rms, 0.1);
+    BOOST_CHECK(std::isnan(r.rows[0].mse));
+    BOOST_CHECK(r.rows[0].floorLimited);
+    BOOST_CHECK_EQUAL(r.scenes.at(0).noiseFloor, 2.5e-5);
+    BOOST_CHECK(r.skipped.empty());
+    // A row without its scene is named with its index.
+    std::ofstream(path) << "{\"format\": \"stipple-validate results 1\", \"rows\": [{\"pattern\": \"x\"}]}";
+    BOOST_CHECK_EXCEPTION(readResultsJson(path), std::runtime_error, [](const std::runtime_error& e) {
+        return std::string(e.what()).find("rows[0] lacks 'scene'") != std::string::npos;
+    });
+}
+
+BOOST_AUTO_TEST_CASE(csv_fields_are_quoted) {
+    // Scene names are free text: a comma, a quote or a line break must not shift the columns.
+    BOOST_CHECK_EQUAL(csvField("plain-name"), "plain-name");
+    BOOST_CHECK_EQUAL(csvField("a,b"), "\"a,b\"");
+    BOOST_CHECK_EQUAL(csvField("say \"hi\""), "\"say \"\"hi\"\"\"");
+    BOOST_CHECK_EQUAL(csvField("two\nlines"), "\"two\nlines\"");
+    ResultRow row;
+    row.scene = "box, lit";
+    row.pattern = "independent";
+    row.rms = 0.25;
+    const std::string line = csvRow(row, resultRowFields());
+    BOOST_CHECK(line.rfind("\"box, lit\",independent,", 0) == 0);
+    BOOST_CHECK_EQUAL(csvHeader(resultRowFields()).substr(0, 24), "scene,pattern,spp,seed,w");
 }

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "matrix.h"
+#include "test_vocabulary.h"
 
 using namespace stipple::validation;
 namespace fs = std::filesystem;
@@ -46,7 +47,7 @@ checks:
 // Expects MatrixError whose message contains every piece.
 void expectError(const Fixture& f, const std::string& text, std::vector<std::string> pieces) {
     try {
-        parseMatrix(text, f.path());
+        parseMatrix(text, f.path(), test::kVocabulary);
         BOOST_ERROR("no error for:\n" + text);
     } catch (const MatrixError& e) {
         std::string msg = e.what();
@@ -63,7 +64,7 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
 
 BOOST_AUTO_TEST_CASE(good_matrix_reads) {
     Fixture f;
-    Matrix m = parseMatrix(good, f.path());
+    Matrix m = parseMatrix(good, f.path(), test::kVocabulary);
     BOOST_CHECK_EQUAL(m.name, "tiny");
     BOOST_REQUIRE_EQUAL(m.scenes.size(), 2u);
     BOOST_CHECK_EQUAL(m.scenes[0].name, "box"); // default: file stem
@@ -88,6 +89,12 @@ BOOST_AUTO_TEST_CASE(yaml_syntax_error_has_line_and_column) {
     Fixture f;
     expectError(f, "name: x\nscenes:\n  - file: a\n   width: 3\n", {f.path() + ":4:4", "end of sequence not found"});
     expectError(f, "patterns: [independent, stratified\nspp: 4\n", {f.path() + ":2:"});
+}
+
+BOOST_AUTO_TEST_CASE(duplicate_keys_are_rejected) {
+    // yaml-cpp keeps both entries; the strict reader names the second.
+    Fixture f;
+    expectError(f, replaced(good, "seeds: 4", "seeds: 4\nseeds: 5"), {f.path() + ":10:1", "duplicate key 'seeds'"});
 }
 
 BOOST_AUTO_TEST_CASE(unknown_names_are_named) {
@@ -118,7 +125,7 @@ BOOST_AUTO_TEST_CASE(bad_values_are_errors) {
 }
 
 BOOST_AUTO_TEST_CASE(missing_file_is_named) {
-    BOOST_CHECK_EXCEPTION(loadMatrix("no/such/matrix.yaml"), MatrixError, [](const MatrixError& e) {
+    BOOST_CHECK_EXCEPTION(loadMatrix("no/such/matrix.yaml", test::kVocabulary), MatrixError, [](const MatrixError& e) {
         return std::string(e.what()).find("no/such/matrix.yaml") != std::string::npos;
     });
 }

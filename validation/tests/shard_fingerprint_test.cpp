@@ -9,6 +9,7 @@
 
 #include "results.h"
 #include "shard_fingerprint.h"
+#include "test_vocabulary.h"
 
 using namespace stipple::validation;
 namespace fs = std::filesystem;
@@ -23,7 +24,7 @@ struct Fixture {
         matrix = parseMatrix("scenes:\n  - { file: box.yaml, name: box, width: 16 }\npatterns: [independent, stratified]\n"
                              "spp: [1, 4]\nseeds: 4\nreference: { spp: 16, seed: 7 }\n"
                              "checks:\n  - { type: time_ceiling, seconds: 30 }\n",
-                             (dir / "m.yaml").string());
+                             (dir / "m.yaml").string(), test::kVocabulary);
     }
     ~Fixture() { fs::remove_all(dir); }
     SceneFingerprint box() const {

@@ -1,4 +1,4 @@
-// Stiff and extreme inputs of validation's metrics (issue 7), through its library API: references of zero,
+// Stiff and extreme inputs of validation's metrics, through its library API: references of zero,
 // images holding inf and NaN (counted and reported, never averaged in), sizes that differ (a clear error), and
 // what those do downstream (aggregates, slopes, results.json). Expected outcomes are exact.
 #define BOOST_TEST_MODULE validation_stiff_metrics
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(zero_and_undefined_errors_downstream) {
     results.rows = rows;
     const std::string path = (std::filesystem::temp_directory_path() /
                               ("stipple-stiff-results-" + std::to_string(getpid()) + ".json")).string();
-    writeResultsJson(path, results, cells, slopes, "[]");
+    writeResultsJson(path, results, cells, slopes, Json::array());
     Results back = readResultsJson(path);
     std::filesystem::remove(path);
     BOOST_TEST(back.rows.size() == rows.size());

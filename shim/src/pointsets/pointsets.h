@@ -22,6 +22,8 @@ std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
 // Points in the order they were accepted.
 std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed);
 
+// Analysis, in the static library stipple_analysis (relative_radius.cpp), not in libstipple.so:
+//
 // rho = d_min / d_max on the unit torus, d_max the densest packing distance of n points
 // (1/n in 1D, hexagonal sqrt(2/(sqrt(3) n)) in 2D, FCC (sqrt(2)/n)^(1/3) in 3D).
 // For n = 1 the only neighbour is the point's own periodic image at distance 1.

@@ -16,8 +16,19 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Version string of the renderer; part of every reference-cache key.
+// "stipple-render <project version>": what results and image metadata name as their Software.
 const char* rendererVersion();
+// Short hash of the renderer library's own sources (generated at build time): changes whenever its code does.
+const char* rendererSourceHash();
+// rendererVersion() plus rendererSourceHash(): the renderer's part of every reference-cache key.
+std::string rendererIdentity();
+
+// The sample patterns the shim that RenderOptions::shim = shimPath selects serves (their one owner), in id
+// order. Loads the library if needed; throws std::runtime_error when none loads.
+std::vector<std::string> patternNames(const std::string& shimPath);
+
+// The integrators a render can name (RenderOptions::integrator), from the renderer's one registry.
+std::vector<std::string> integratorNames();
 
 // Identity of the sample-stream library that RenderOptions::shim = shimPath selects: its version and a hash of
 // the file's bytes, so a reference cache notices a rebuilt shim. Loads the library if needed; throws
@@ -35,7 +46,7 @@ struct Image {
 
 // Everything a render can be told; zero / empty means "the scene's default".
 struct RenderOptions {
-    std::string pattern = "stratified"; // independent | stratified | poisson | poisson-seed
+    std::string pattern = "stratified"; // one of patternNames(shim)
     uint32_t spp = 0;
     uint64_t seed = 1;
     int width = 0;
@@ -55,6 +66,7 @@ struct RenderResult {
     uint64_t nonFiniteSamples = 0;
     uint64_t raysTraced = 0;
     std::string layout;           // the dimension layout declared to the shim, one line per dimension
+    RenderOptions settings;       // what was rendered: the options with every scene default resolved
 };
 
 class Scene {
@@ -68,11 +80,14 @@ public:
     virtual int defaultWidth() const = 0;
     virtual int defaultHeight() const = 0;
     virtual uint32_t defaultSpp() const = 0;
-    virtual int defaultMaxDepth() const = 0;
     virtual std::string contentHash() const = 0; // hash of the file and everything it includes
     virtual double loadSeconds() const = 0;      // parsing + geometry generation
     virtual double buildSeconds() const = 0;     // Embree BVH build
     virtual uint64_t triangleCount() const = 0;  // after instancing
+
+    // The options with every "scene default" (zero, empty, -1) replaced by the scene's value: what a render with
+    // them uses, and what a cache keyed on a render must name. Resolved here only.
+    virtual RenderOptions resolve(const RenderOptions& options) const = 0;
 
     // The layout this scene would declare to the shim for the given options, one line per dimension.
     virtual std::string describeLayout(const RenderOptions& options) const = 0;
@@ -81,10 +96,19 @@ public:
     virtual RenderResult render(const RenderOptions& options) const = 0;
 };
 
-// Writes a float EXR (scene-linear) with metadata, via a temp file renamed into place.
-void writeExr(const std::string& path, const Image& image,
-              const std::vector<std::pair<std::string, std::string>>& metadata);
-// Writes an sRGB PNG through OpenColorIO (scene-linear Rec.709 -> sRGB display), exposure in stops.
+// EXR metadata: bare snake_case keys (scene, content_hash, integrator, pattern, spp, seed, max_depth,
+// renderer, reference_key, render_seconds, ...), stored as "stipple:<key>". One vocabulary for every writer.
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+inline constexpr const char* kMetadataPrefix = "stipple:";
+
+// Writes a float EXR (scene-linear Rec.709) via a temporary file renamed into place, with the standard
+// attributes Software (rendererVersion()), chromaticities and oiio:ColorSpace, and each metadata key under
+// kMetadataPrefix. Throws std::invalid_argument for a key that is empty or already has a prefix.
+void writeExr(const std::string& path, const Image& image, const ImageMetadata& metadata);
+// The kMetadataPrefix attributes of an EXR, prefix removed, as strings.
+ImageMetadata readExrMetadata(const std::string& path);
+// Writes an sRGB PNG preview, exposure in stops: through $OCIO's default display and view when $OCIO is set,
+// else OIIO's built-in linear -> sRGB.
 void writePng(const std::string& path, const Image& image, float exposureStops = 0.0f);
 // Reads an EXR written by writeExr (or any RGB image OIIO reads).
 Image readImage(const std::string& path);

@@ -1,0 +1,222 @@
+// Bidirectional path tracing: a camera subpath z_0 .. z_{t-1} and a light subpath y_0 .. y_{s-1} per camera
+// sample, connected by every strategy (s, t) with t >= 1 and s + t - 2 <= max depth:
+//   s = 0       the camera subpath itself ends on an emitter;
+//   s = 1       (t >= 2) a fresh light sample from z_{t-1} (next-event estimation), not y_0;
+//   t = 1       light tracing: y_{s-1} connected to a lens point and splatted at its raster position (through
+//               the tile's SplatList, so images do not depend on the thread count);
+//   otherwise   y_{s-1} and z_{t-1} joined by a shadow ray.
+// Each contribution carries the power-heuristic weight of bdpt_mis.h. Vertices with delta BSDFs (mirror, glass)
+// are never connection ends. Light subpaths start on a light chosen by power and scatter with the adjoint BSDF
+// (TransportMode::Importance: no 1/eta^2 at refractions, shading-normal correction). No Russian roulette: the
+// walks stop at the depth limit, so every strategy's density is known exactly.
+//
+// Dimensions: the walks' (bdpt_subpath.h), then per connection (max depth D; only what the scene uses):
+//   connect.s1.tT.light.choice 1D (more than one light), connect.s1.tT.light.pos 2D   T = 2 .. D+1
+//   connect.t1.sS.lens 2D                             S = 1 .. D+1, thin-lens cameras only
+// Light walks and s = 1 samples are skipped when every material is specular (no connection can be made).
+#include "integrators/bdpt/bdpt_integrator.h"
+
+#include "integrators/bdpt/bdpt_mis.h"
+#include "integrators/bdpt/bdpt_subpath.h"
+#include "integrators/bdpt/bdpt_vertex.h"
+#include "integrators/integrator_registry.h"
+
+#include <stdexcept>
+
+namespace stipple::render {
+
+namespace bdpt {
+
+StrategyFilter parseVariant(const std::string& name) {
+    StrategyFilter f;
+    if (name == "bdpt") return f;
+    auto fail = [&]() -> StrategyFilter {
+        throw std::invalid_argument("unknown integrator '" + name +
+                                    "'; BDPT debug variants are bdpt:s=S,t=T (one strategy, unweighted), "
+                                    "bdpt:s=S,t=T,mis (one strategy, MIS-weighted) and bdpt:depth=D");
+    };
+    if (name.rfind("bdpt:", 0) != 0) return fail();
+    std::string rest = name.substr(5);
+    auto number = [&](const std::string& text) {
+        if (text.empty() || text.size() > 4 || text.find_first_not_of("0123456789") != std::string::npos) fail();
+        return std::stoi(text);
+    };
+    if (rest.rfind("depth=", 0) == 0) {
+        f.depth = number(rest.substr(6));
+        return f;
+    }
+    if (rest.rfind("s=", 0) != 0) return fail();
+    size_t comma = rest.find(",t=");
+    if (comma == std::string::npos) return fail();
+    f.s = number(rest.substr(2, comma - 2));
+    std::string tail = rest.substr(comma + 3);
+    f.weighted = false;
+    size_t mis = tail.find(",mis");
+    if (mis != std::string::npos) {
+        if (tail.substr(mis) != ",mis") return fail();
+        f.weighted = true;
+        tail = tail.substr(0, mis);
+    }
+    f.t = number(tail);
+    if (f.t < 1 || f.s + f.t < 2) {
+        throw std::invalid_argument("BDPT strategy s=" + std::to_string(f.s) + ", t=" + std::to_string(f.t) +
+                                    " does not exist: t must be >= 1 and s + t >= 2");
+    }
+    return f;
+}
+
+namespace {
+
+class BdptIntegrator final : public Integrator {
+public:
+    BdptIntegrator(const RenderScene& scene, const Camera& camera, const IntegratorSettings& s, std::string name)
+        : scene_(scene), camera_(camera), eval_(scene, camera), mis_(eval_), maxDepth_(std::max(0, s.maxDepth)),
+          subpaths_(scene, camera, maxDepth_), name_(std::move(name)), filter_(parseVariant(name_)) {}
+
+    const char* name() const override { return name_.c_str(); }
+
+    void declareDimensions(SampleLayout& layout) override {
+        const size_t nLights = scene_.lights().size();
+        if (nLights == 0) return; // nothing can be seen: no dimension is read
+        const bool connectible = scene_.anyNonSpecularMaterial();
+        subpaths_.declareDimensions(layout, connectible);
+        connectChoice_.assign(size_t(maxDepth_ + 2), -1);
+        connectPos_.assign(size_t(maxDepth_ + 2), -1);
+        if (connectible) {
+            for (int t = 2; t <= maxDepth_ + 1; ++t) {
+                std::string p = "connect.s1.t" + std::to_string(t) + ".light.";
+                if (nLights > 1) connectChoice_[size_t(t)] = layout.add(p + "choice", 1);
+                connectPos_[size_t(t)] = layout.add(p + "pos", 2);
+            }
+        }
+        connectLens_.assign(size_t(maxDepth_ + 2), -1);
+        if (camera_.isThinLens())
+            for (int s = 1; s <= (connectible ? maxDepth_ + 1 : 1); ++s)
+                connectLens_[size_t(s)] = layout.add("connect.t1.s" + std::to_string(s) + ".lens", 2);
+    }
+
+    Spectrum Li(const Ray& ray, const SampleView& sv, TileContext& tile) const override {
+        if (scene_.lights().empty()) return {};
+        thread_local std::vector<PathVertex> cam, light;
+        subpaths_.cameraSubpath(ray, sv, tile, cam);
+        subpaths_.lightSubpath(sv, tile, light);
+
+        Spectrum L;
+        const int nCam = int(cam.size()), nLight = int(light.size());
+        for (int t = 1; t <= nCam; ++t) {
+            const int sMax = std::min(nLight, maxDepth_ + 2 - t);
+            for (int s = 0; s <= std::max(sMax, t >= 2 ? 1 : 0); ++s) {
+                if (s + t < 2 || s + t - 2 > maxDepth_ || !filter_.accepts(s, t)) continue;
+                if (t == 1) {
+                    if (s <= nLight) lightTracing(light, s, sv, tile);
+                } else if (s == 0) {
+                    L += hitEmitter(light, cam, t);
+                } else if (s == 1) {
+                    L += freshLightSample(light, cam, t, sv, tile);
+                } else if (s <= nLight) {
+                    L += joinSubpaths(light, cam, s, t, tile);
+                }
+            }
+        }
+        return L;
+    }
+
+private:
+    float weight(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int s, int t,
+                 const ConnectionVertices& fresh) const {
+        return filter_.weighted ? mis_.weight(light, cam, s, t, fresh) : 1.0f;
+    }
+
+    // s = 0: the camera subpath's last vertex lies on an emitter.
+    Spectrum hitEmitter(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int t) const {
+        const PathVertex& z = cam[size_t(t - 1)];
+        if (z.light < 0) return {};
+        Spectrum Le = eval_.Le(z, cam[size_t(t - 2)]);
+        if (Le.isBlack()) return {};
+        return z.beta * Le * weight(light, cam, 0, t, {});
+    }
+
+    // s = 1, t >= 2: a fresh light sample seen from z_{t-1}, drawn with the light's own sampleLi.
+    Spectrum freshLightSample(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int t,
+                              const SampleView& sv, TileContext& tile) const {
+        const PathVertex& z = cam[size_t(t - 1)];
+        if (z.delta || connectPos_[size_t(t)] < 0) return {};
+        float pmf = 1;
+        size_t li = scene_.lights().size() == 1
+                        ? 0
+                        : scene_.lightChoice().sample(sv.get1D(connectChoice_[size_t(t)]), &pmf);
+        LightLiSample ls;
+        if (!scene_.lights()[li].sampleLi(z.p, sv.get2D(connectPos_[size_t(t)]), ls)) return {};
+        PathVertex y;
+        y.kind = VertexKind::Light;
+        y.p = ls.p;
+        y.n = y.ns = ls.n;
+        y.light = int(li);
+        y.pdfFwd = eval_.pdfLightOrigin(y);
+        Spectrum c = z.beta * eval_.f(&cam[size_t(t - 2)], z, y, TransportMode::Radiance) * ls.L *
+                     (absDot(z.ns, ls.wi) / (pmf * ls.pdf));
+        if (c.isBlack()) return {};
+        ++tile.rays;
+        if (scene_.occludedBetween(z.p, z.n, ls.p)) return {};
+        ConnectionVertices fresh;
+        fresh.freshLight = &y;
+        return c * weight(light, cam, 1, t, fresh);
+    }
+
+    // s >= 2, t >= 2: join y_{s-1} and z_{t-1}.
+    Spectrum joinSubpaths(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int s, int t,
+                          TileContext& tile) const {
+        const PathVertex &y = light[size_t(s - 1)], &z = cam[size_t(t - 1)];
+        if (y.delta || z.delta) return {};
+        Spectrum c = y.beta * eval_.f(&light[size_t(s - 2)], y, z, TransportMode::Importance) *
+                     eval_.f(&cam[size_t(t - 2)], z, y, TransportMode::Radiance) * z.beta *
+                     PathEvaluator::geometry(y, z);
+        if (c.isBlack()) return {};
+        ++tile.rays;
+        if (scene_.occludedBetween(z.p, z.n, y.p)) return {};
+        return c * weight(light, cam, s, t, {});
+    }
+
+    // t = 1: connect y_{s-1} to a lens point and splat the contribution where it lands on the film.
+    void lightTracing(const std::vector<PathVertex>& light, int s, const SampleView& sv, TileContext& tile) const {
+        const PathVertex& y = light[size_t(s - 1)];
+        if (y.delta) return;
+        Point2 uLens = sv.get2D(connectLens_[size_t(s)]);
+        CameraWiSample cs;
+        if (!camera_.sampleWi(y.p, uLens, cs)) return;
+        PathVertex z;
+        z.kind = VertexKind::Camera;
+        z.p = cs.pLens;
+        z.n = z.ns = cs.nLens;
+        const PathVertex* prev = s >= 2 ? &light[size_t(s - 2)] : nullptr;
+        Spectrum c = y.beta * eval_.f(prev, y, z, TransportMode::Importance) * cs.We *
+                     (absDot(y.ns, cs.wi) / cs.pdf);
+        if (c.isBlack()) return;
+        ++tile.rays;
+        if (scene_.occludedBetween(y.p, y.n, cs.pLens)) return;
+        ConnectionVertices fresh;
+        fresh.freshCamera = &z;
+        std::vector<PathVertex> noCamera; // t = 1 reads only the fresh lens vertex
+        tile.splats->add(cs.raster, c * weight(light, noCamera, s, 1, fresh), tile.width, tile.height);
+    }
+
+    const RenderScene& scene_;
+    const Camera& camera_;
+    PathEvaluator eval_;
+    MisWeights mis_;
+    int maxDepth_;
+    SubpathGenerator subpaths_;
+    std::string name_;
+    StrategyFilter filter_;
+    std::vector<int> connectChoice_, connectPos_, connectLens_; // indexed by t (s = 1) and by s (t = 1)
+};
+
+} // namespace
+} // namespace bdpt
+
+std::unique_ptr<Integrator> makeBdptIntegrator(const RenderScene& scene, const Camera& camera,
+                                               const IntegratorSettings& settings, const std::string& name) {
+    return std::make_unique<bdpt::BdptIntegrator>(scene, camera, settings, name);
+}
+
+} // namespace stipple::render

@@ -1,0 +1,37 @@
+// The multiple-importance weight of one BDPT strategy (power heuristic, beta = 2) over every strategy that could
+// have produced the same path (Veach's thesis 10.2). The full path x_0 ... x_{n-1} runs from the light end:
+// x_j = lightPath[j] for j < s, x_j = cameraPath[n-1-j] for j >= s. Strategy s' takes x_0 .. x_{s'-1} from the
+// light and the rest from the camera; p_{s'+1} / p_{s'} is the area density of x_{s'} from the light side over
+// its density from the camera side, so the densities stored on the vertices (area measure) are all that is
+// needed, plus the few that depend on the connection, computed here.
+//
+// Specular vertices: their densities are Dirac terms that cancel between the strategies that remain, so a zero
+// density is read as 1 and strategies with a connection ending at a delta vertex are skipped (pbrt-v3's rule).
+// The s = 1 strategy draws x_0 with the light's own sampleLi from x_1 (a cone for sphere lights seen from
+// outside), not by area: its density is used for that strategy alone.
+#pragma once
+
+#include "integrators/bdpt/bdpt_vertex.h"
+
+#include <vector>
+
+namespace stipple::render::bdpt {
+
+struct ConnectionVertices {
+    const PathVertex* freshLight = nullptr;  // s = 1: the fresh light sample replacing lightPath[0]
+    const PathVertex* freshCamera = nullptr; // t = 1: the lens point sampled towards the light vertex
+};
+
+class MisWeights {
+public:
+    explicit MisWeights(const PathEvaluator& eval) : eval_(eval) {}
+    // Weight of strategy (s, t); s + t >= 2, t >= 1. Uses per-thread scratch space (no allocation per call
+    // once warm).
+    float weight(const std::vector<PathVertex>& lightPath, const std::vector<PathVertex>& cameraPath, int s, int t,
+                 const ConnectionVertices& fresh) const;
+
+private:
+    const PathEvaluator& eval_;
+};
+
+} // namespace stipple::render::bdpt

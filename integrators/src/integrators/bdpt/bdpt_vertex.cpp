@@ -1,0 +1,88 @@
+#include "integrators/bdpt/bdpt_vertex.h"
+
+namespace stipple::render::bdpt {
+
+namespace {
+inline Vec3 direction(const PathVertex& from, const PathVertex& to) { return normalize(to.p - from.p); }
+} // namespace
+
+float PathEvaluator::toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to) {
+    Vec3 d = to.p - from.p;
+    float dist2 = lengthSquared(d);
+    if (dist2 == 0) return 0;
+    // Every vertex kind has a normal (the lens's is the camera's forward), so one formula covers them all.
+    return pdfSolidAngle * absDot(to.n, d) / (dist2 * std::sqrt(dist2));
+}
+
+float PathEvaluator::geometry(const PathVertex& a, const PathVertex& b) {
+    Vec3 d = b.p - a.p;
+    float dist2 = lengthSquared(d);
+    if (dist2 == 0) return 0;
+    float inv = 1 / std::sqrt(dist2);
+    // Shading normals for the cosines (with the adjoint correction in f this is Veach's 5.3 form).
+    return absDot(a.ns, d) * inv * absDot(b.ns, d) * inv / dist2;
+}
+
+float PathEvaluator::pdf(const PathVertex* prev, const PathVertex& cur, const PathVertex& next) const {
+    switch (cur.kind) {
+    case VertexKind::Camera: {
+        float pdfPos, pdfDir;
+        camera_.pdfWe(Ray{cur.p, direction(cur, next)}, pdfPos, pdfDir);
+        return toArea(pdfDir, cur, next);
+    }
+    case VertexKind::Light:
+        return pdfLightEmission(cur, next);
+    case VertexKind::Surface: {
+        if (!prev) return 0;
+        Frame frame(cur.ns);
+        Vec3 wo = frame.toLocal(direction(cur, *prev)), wi = frame.toLocal(direction(cur, next));
+        return toArea(cur.material->pdf(wo, wi), cur, next);
+    }
+    }
+    return 0;
+}
+
+float PathEvaluator::pdfLightOrigin(const PathVertex& v) const {
+    if (v.light < 0) return 0;
+    return scene_.lightChoicePmf(v.light) / scene_.lights()[size_t(v.light)].area();
+}
+
+float PathEvaluator::pdfLightEmission(const PathVertex& v, const PathVertex& next) const {
+    if (v.light < 0) return 0;
+    float pdfPos, pdfDir;
+    scene_.lights()[size_t(v.light)].pdfLe(v.n, direction(v, next), pdfPos, pdfDir);
+    return toArea(pdfDir, v, next);
+}
+
+float PathEvaluator::pdfLightConnect(const PathVertex& v, const PathVertex& ref) const {
+    if (v.light < 0) return 0;
+    const Light& light = scene_.lights()[size_t(v.light)];
+    // sampleLi's density is a solid angle at ref (a cone for spheres seen from outside, else area-uniform).
+    return toArea(scene_.lightChoicePmf(v.light) * light.pdfLi(ref.p, v.p, v.n), ref, v);
+}
+
+Spectrum PathEvaluator::f(const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
+                          TransportMode mode) const {
+    switch (cur.kind) {
+    case VertexKind::Light:
+        return Le(cur, next);
+    case VertexKind::Surface: {
+        if (!prev) return {};
+        Vec3 woW = direction(cur, *prev), wiW = direction(cur, next);
+        Frame frame(cur.ns);
+        Spectrum v = cur.material->f(frame.toLocal(woW), frame.toLocal(wiW), mode);
+        if (mode == TransportMode::Importance) v *= shadingNormalCorrection(cur.ns, cur.n, woW, wiW);
+        return v;
+    }
+    case VertexKind::Camera:
+        return {};
+    }
+    return {};
+}
+
+Spectrum PathEvaluator::Le(const PathVertex& v, const PathVertex& towards) const {
+    if (v.light < 0) return {};
+    return scene_.lights()[size_t(v.light)].L(v.n, direction(v, towards));
+}
+
+} // namespace stipple::render::bdpt

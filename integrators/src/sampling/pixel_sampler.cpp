@@ -1,0 +1,63 @@
+#include "sampling/pixel_sampler.h"
+
+#include <chrono>
+
+namespace stipple::render {
+
+PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, uint32_t spp, uint64_t seed,
+                           const SampleLayout& layout)
+    : shim_(shim), spp_(spp), layout_(layout) {
+    const stipple_api& api = shim.api();
+    uint32_t patternId = 0;
+    if (api.pattern_from_name(pattern.c_str(), &patternId) != STIPPLE_OK) {
+        std::string known;
+        for (const std::string& name : shim.patternNames()) known += (known.empty() ? "" : ", ") + name;
+        throw ShimError("unknown pattern '" + pattern + "' (" + shim.lastError() + "); expected one of " + known);
+    }
+    std::vector<stipple_dimension_desc> dims;
+    for (const Dimension& d : layout.dimensions()) {
+        stipple_dimension_desc desc{};
+        desc.struct_size = sizeof(stipple_dimension_desc);
+        desc.arity = d.arity;
+        desc.count = d.count;
+        desc.name = d.name.c_str();
+        dims.push_back(desc);
+    }
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof(stipple_sampler_desc);
+    desc.pattern = patternId;
+    desc.samples_per_pixel = spp;
+    desc.dimension_count = uint32_t(dims.size());
+    desc.seed = seed;
+    desc.dimensions = dims.data();
+    if (api.sampler_create(&desc, &sampler_) != STIPPLE_OK)
+        throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
+                        std::to_string(dims.size()) + " dimensions: " + shim.lastError());
+}
+
+PixelSampler::~PixelSampler() { shim_.api().sampler_release(sampler_); }
+
+void PixelSampler::fillPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
+    auto start = std::chrono::steady_clock::now();
+    const stipple_api& api = shim_.api();
+    for (size_t d = 0; d < out.offset_.size(); ++d) {
+        size_t n = size_t(spp_) * out.stride_[d];
+        if (api.sampler_fill_pixel(sampler_, x, y, uint32_t(d), out.values_.data() + out.offset_[d], n) != STIPPLE_OK)
+            throw ShimError("stipple_sampler_fill_pixel(" + std::to_string(x) + ", " + std::to_string(y) +
+                            ", dimension " + std::to_string(d) + ") failed: " + shim_.lastError());
+    }
+    out.samplerSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+PixelSamples::PixelSamples(const PixelSampler& sampler) {
+    size_t total = 0;
+    for (const Dimension& d : sampler.layout().dimensions()) {
+        offset_.push_back(total);
+        stride_.push_back(d.count * d.arity);
+        arity_.push_back(d.arity);
+        total += size_t(sampler.samplesPerPixel()) * d.count * d.arity;
+    }
+    values_.assign(total, 0.0f);
+}
+
+} // namespace stipple::render

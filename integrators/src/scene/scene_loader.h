@@ -1,0 +1,13 @@
+// Reads a scene YAML file (integrators/SCENE_FORMAT.md) into a SceneDescription. Every error throws SceneError
+// with "file:line:column: key 'k': expected ..., got ...".
+#pragma once
+
+#include "scene/scene_description.h"
+
+#include <string>
+
+namespace stipple::render {
+
+SceneDescription loadSceneDescription(const std::string& path);
+
+} // namespace stipple::render

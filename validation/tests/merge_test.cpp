@@ -1,0 +1,107 @@
+// mergeShards on synthetic shard folders: the union of the rows in the matrix's order, and an error naming the
+// folder for a duplicate row, a differing renderer version (through the fingerprint) and a missing row.
+#define BOOST_TEST_MODULE validation_merge
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <unistd.h>
+
+#include "merge.h"
+#include "results.h"
+#include "shard_fingerprint.h"
+
+using namespace stipple::validation;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Shards {
+    fs::path dir = fs::temp_directory_path() / ("stipple-merge-test-" + std::to_string(getpid()));
+    Matrix matrix;
+    Shards() {
+        fs::create_directories(dir);
+        matrix.name = "m";
+        matrix.path = "m.yaml";
+        MatrixScene s;
+        s.name = "box";
+        matrix.scenes = {s};
+        matrix.patterns = {"independent", "stratified"};
+        matrix.spp = {4};
+        matrix.seeds = {1, 2};
+    }
+    ~Shards() { fs::remove_all(dir); }
+    // A shard folder holding the rows (pattern, seed) given.
+    std::string shard(const std::string& name, const std::vector<std::pair<std::string, uint64_t>>& rows,
+                      const std::string& version = "stipple-render 1") {
+        const fs::path d = dir / name;
+        fs::create_directories(d);
+        Results r;
+        r.matrixName = "m";
+        r.rendererVersion = version;
+        SceneInfo info;
+        info.name = "box";
+        r.scenes = {info};
+        for (const auto& [pattern, seed] : rows) {
+            ResultRow row;
+            row.scene = "box";
+            row.pattern = pattern;
+            row.spp = 4;
+            row.seed = seed;
+            row.rms = 0.5 + double(seed) / 8;
+            r.rows.push_back(row);
+        }
+        SceneFingerprint box;
+        box.loaded = true;
+        box.width = box.height = 16;
+        r.fingerprint = runFingerprint(matrix, {box}, version, "shim 1");
+        writeResultsJson((d / "results.json").string(), r, {}, {}, Json::array());
+        return d.string();
+    }
+    std::string out() const { return (dir / "merged").string(); }
+};
+
+bool mentions(const std::runtime_error& e, const std::string& what) {
+    return std::string(e.what()).find(what) != std::string::npos;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(union_in_matrix_order) {
+    Shards s;
+    const std::string a = s.shard("a", {{"stratified", 2}, {"independent", 1}});
+    const std::string b = s.shard("b", {{"stratified", 1}, {"independent", 2}});
+    const Results merged = mergeShards(s.matrix, {a, b}, s.out());
+    BOOST_REQUIRE_EQUAL(merged.rows.size(), 4u);
+    BOOST_TEST(merged.rows[0].pattern == "independent");
+    BOOST_TEST(merged.rows[0].seed == 1u);
+    BOOST_TEST(merged.rows[3].pattern == "stratified");
+    BOOST_TEST(merged.rows[3].seed == 2u);
+    BOOST_TEST(merged.rows[3].rms == 0.75);
+    BOOST_REQUIRE_EQUAL(merged.scenes.size(), 1u);
+    BOOST_TEST(merged.rendererVersion == "stipple-render 1");
+}
+
+BOOST_AUTO_TEST_CASE(duplicate_row_names_the_folder) {
+    Shards s;
+    const std::string a = s.shard("a", {{"independent", 1}, {"independent", 2}, {"stratified", 1}});
+    const std::string b = s.shard("b", {{"stratified", 1}, {"stratified", 2}});
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error, [&](const auto& e) {
+        return mentions(e, b) && mentions(e, "appears in two shards");
+    });
+}
+
+BOOST_AUTO_TEST_CASE(renderer_versions_must_agree) {
+    Shards s;
+    const std::string a = s.shard("a", {{"independent", 1}, {"independent", 2}});
+    const std::string b = s.shard("b", {{"stratified", 1}, {"stratified", 2}}, "stipple-render 2");
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error,
+                          [&](const auto& e) { return mentions(e, b) && mentions(e, "renderer.version"); });
+}
+
+BOOST_AUTO_TEST_CASE(missing_rows_are_an_error) {
+    Shards s;
+    const std::string a = s.shard("a", {{"independent", 1}, {"independent", 2}, {"stratified", 1}});
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a}, s.out()), std::runtime_error, [](const auto& e) {
+        return mentions(e, "1 cell × seed rows") && mentions(e, "box stratified 4 spp seed 2");
+    });
+}
