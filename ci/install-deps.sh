@@ -15,6 +15,9 @@ packages=(
   abigail-tools
   python3
   clang libclang-rt-14-dev
+  slurm-wlm slurmctld slurmd slurm-client munge
+  nlohmann-json3-dev
+  python3-yaml
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sanitizer CI: build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
-# label `slow`; build the tsan preset and run label `parallel` (tests that exercise several threads).
+# labels `slow` and `slurm` (the Slurm test checks job orchestration, which the release run covers); build the
+# tsan preset and run label `parallel` (tests that exercise several threads).
 # Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
 #
 # Environment (all optional):
@@ -38,7 +39,7 @@ if [[ " $which " == *" asan "* ]]; then
     export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
     export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
     export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-    ctest --test-dir "$dir" -LE slow -j "$jobs" --output-on-failure --timeout 900 || status=1
+    ctest --test-dir "$dir" -LE 'slow|slurm' -j "$jobs" --output-on-failure --timeout 900 || status=1
     unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
     echo "sanitizers.sh: asan done after $((SECONDS - start)) s"
 fi

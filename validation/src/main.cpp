@@ -18,6 +18,7 @@
 #include "report.h"
 #include "results.h"
 #include "runner.h"
+#include "shard_fingerprint.h"
 
 #include <stipple/render/renderer.h>
 #include <stipple/version.h>

@@ -1,5 +1,7 @@
 #include "merge.h"
 
+#include "shard_fingerprint.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <set>
@@ -10,12 +12,22 @@ namespace stipple::validation {
 
 namespace fs = std::filesystem;
 
+namespace {
+bool isMatrixCell(const Matrix& m, const ResultRow& row) {
+    auto has = [](const auto& list, const auto& v) { return std::find(list.begin(), list.end(), v) != list.end(); };
+    return m.findScene(row.scene) && has(m.patterns, row.pattern) && has(m.spp, row.spp) && has(m.seeds, row.seed);
+}
+} // namespace
+
 Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const std::string& out) {
+    // Shards of different matrices or builds would average renders that cannot be compared: refuse them first.
+    checkShardFingerprints(m, dirs);
     Results merged;
     merged.matrixName = m.name;
     std::set<std::tuple<std::string, std::string, uint32_t, uint64_t>> seen;
     for (const auto& dir : dirs) {
         Results r = readResultsJson((fs::path(dir) / "results.json").string());
+        if (merged.fingerprint.empty()) merged.fingerprint = r.fingerprint;
         if (merged.rendererVersion.empty()) merged.rendererVersion = r.rendererVersion;
         else if (r.rendererVersion != merged.rendererVersion)
             throw std::runtime_error(dir + ": renderer version '" + r.rendererVersion + "' differs from '" +
@@ -27,6 +39,9 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
             if (!known) merged.scenes.push_back(s);
         }
         for (const auto& row : r.rows) {
+            if (!isMatrixCell(m, row))
+                throw std::runtime_error(dir + ": " + row.scene + " " + row.pattern + " " + std::to_string(row.spp) +
+                                         " spp seed " + std::to_string(row.seed) + " is not a cell × seed of " + m.path);
             if (!seen.insert({row.scene, row.pattern, row.spp, row.seed}).second)
                 throw std::runtime_error(dir + ": " + row.scene + " " + row.pattern + " " + std::to_string(row.spp) +
                                          " spp seed " + std::to_string(row.seed) + " appears in two shards");

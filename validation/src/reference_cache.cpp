@@ -7,6 +7,7 @@
 #include <ctime>
 #include <filesystem>
 
+#include "file_lock.h"
 #include "image_metrics.h"
 #include "report.h"
 #include "fields.h"
@@ -79,18 +80,22 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
     ref.imagePath = stem + ".exr";
     const std::string variancePath = stem + ".variance.exr", provenancePath = stem + ".json";
 
-    if (fs::exists(provenancePath) && fs::exists(ref.imagePath) && fs::exists(variancePath)) {
+    auto readCached = [&] {
+        if (!fs::exists(provenancePath) || !fs::exists(ref.imagePath) || !fs::exists(variancePath)) return false;
         ref.image = render::readImage(ref.imagePath);
         ref.variance = render::readImage(variancePath);
-        if (ref.image.width == options.width && ref.image.height == options.height &&
-            ref.variance.width == options.width && ref.variance.height == options.height) {
-            ref.fromCache = true;
-            return ref;
-        }
         // A size that does not match its key means a damaged entry: render it again.
-    }
+        ref.fromCache = ref.image.width == options.width && ref.image.height == options.height &&
+                        ref.variance.width == options.width && ref.variance.height == options.height;
+        return ref.fromCache;
+    };
+    if (readCached()) return ref;
 
     fs::create_directories(cacheDir);
+    // Shards sharing the cache may need this reference at once: the first renders it under the lock, the others
+    // wait and then read what it published (every file appears by rename; the JSON, last, marks it complete).
+    FileLock lock(stem + ".lock");
+    if (readCached()) return ref;
     // Two independent halves instead of the film's per-pixel variance: the film's variance misses what BDPT
     // splats onto other pixels (light tracing, t = 1), so it would understate a BDPT reference's noise.
     // With halves A and B, (A - B)^2 / 4 is an unbiased estimate of the variance of (A + B) / 2 for any

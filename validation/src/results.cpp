@@ -259,6 +259,7 @@ void writeResultsJson(const std::string& path, const Results& results, const std
     root["format"] = kResultsFormat;
     root["matrix"] = results.matrixName;
     root["renderer_version"] = results.rendererVersion;
+    if (!results.fingerprint.empty()) root["fingerprint"] = Json::parse(fingerprintJson(results.fingerprint));
     root["scenes"] = toJsonArray(results.scenes, sceneInfoFields());
     root["skipped_scenes"] = toJsonArray(results.skipped, skippedSceneFields());
     root["rows"] = toJsonArray(results.rows, resultRowFields());
@@ -287,6 +288,7 @@ Results readResultsJson(const std::string& path) {
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(path + ": malformed results.json: " + e.what());
     }
+    r.fingerprint = readFingerprint(path);
     r.scenes = fromJsonArray(root, "scenes", sceneInfoFields(), path);
     r.skipped = fromJsonArray(root, "skipped_scenes", skippedSceneFields(), path);
     r.rows = fromJsonArray(root, "rows", resultRowFields(), path);

@@ -9,6 +9,7 @@
 
 #include "fields.h"
 #include "matrix.h"
+#include "shard_fingerprint.h"
 #include "statistics.h"
 
 namespace stipple::validation {
@@ -49,6 +50,7 @@ struct Results {
     std::vector<SceneInfo> scenes;
     std::vector<ResultRow> rows;
     std::vector<SkippedScene> skipped; // scenes that could not be loaded or rendered: the run goes on without them
+    Fingerprint fingerprint;           // what makes these rows comparable with another run's (--merge checks it)
 };
 
 // Over the K seeds of one (scene, pattern, spp).

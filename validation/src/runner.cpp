@@ -13,6 +13,7 @@
 #include "progress.h"
 #include "reference_cache.h"
 #include "report.h"
+#include "run_fingerprint.h"
 
 namespace stipple::validation {
 
@@ -99,6 +100,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
     const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
 
     Progress progress(opt.referencesOnly ? 0 : groups.size() * m.patterns.size());
+    std::vector<std::optional<SceneFingerprint>> fingerprinted(m.scenes.size());
     for (size_t si = 0; si < m.scenes.size(); ++si) {
         const MatrixScene& ms = m.scenes[si];
         std::vector<CellGroup> mine;
@@ -117,15 +119,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             } catch (const std::exception& e) {
                 throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + e.what());
             }
-            // The matrix's overrides; the renderer fills in the scene's defaults (integrator, size, depth), so the
-            // reference key names what is rendered.
-            render::RenderOptions base;
-            base.width = ms.width;
-            base.height = ms.height;
-            base.integrator = ms.integrator;
-            base.maxDepth = ms.maxDepth;
-            base.threads = threads;
-            base = scene->resolve(base);
+            const render::RenderOptions base = resolveRenderOptions(ms, *scene, threads);
 
             SceneInfo info;
             info.name = ms.name;
@@ -142,6 +136,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             refOptions.pattern = m.reference.pattern;
             refOptions.spp = ms.referenceSpp ? ms.referenceSpp : m.reference.spp;
             refOptions.seed = m.reference.seed;
+            fingerprinted[si] = describeScene(ms, *scene, base, refOptions.spp);
             progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d (key %s)", ms.name.c_str(),
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
                               base.width, base.height, referenceKey(*scene, refOptions).c_str()));
@@ -190,6 +185,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
         }
     }
     progress.finish();
+    if (!opt.referencesOnly) results.fingerprint = fingerprintRun(m, std::move(fingerprinted), "");
     sortRows(results.rows, m);
     return results;
 }

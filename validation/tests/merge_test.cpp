@@ -1,5 +1,5 @@
 // mergeShards on synthetic shard folders: the union of the rows in the matrix's order, and an error naming the
-// folder for a duplicate row, a differing renderer version and a missing row.
+// folder for a duplicate row, a differing renderer version (through the fingerprint) and a missing row.
 #define BOOST_TEST_MODULE validation_merge
 #include <boost/test/unit_test.hpp>
 
@@ -8,6 +8,7 @@
 
 #include "merge.h"
 #include "results.h"
+#include "shard_fingerprint.h"
 
 using namespace stipple::validation;
 namespace fs = std::filesystem;
@@ -49,6 +50,10 @@ struct Shards {
             row.rms = 0.5 + double(seed) / 8;
             r.rows.push_back(row);
         }
+        SceneFingerprint box;
+        box.loaded = true;
+        box.width = box.height = 16;
+        r.fingerprint = runFingerprint(matrix, {box}, version, "shim 1");
         writeResultsJson((d / "results.json").string(), r, {}, {}, Json::array());
         return d.string();
     }
@@ -90,7 +95,7 @@ BOOST_AUTO_TEST_CASE(renderer_versions_must_agree) {
     const std::string a = s.shard("a", {{"independent", 1}, {"independent", 2}});
     const std::string b = s.shard("b", {{"stratified", 1}, {"stratified", 2}}, "stipple-render 2");
     BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error,
-                          [&](const auto& e) { return mentions(e, b) && mentions(e, "renderer version"); });
+                          [&](const auto& e) { return mentions(e, b) && mentions(e, "renderer.version"); });
 }
 
 BOOST_AUTO_TEST_CASE(missing_rows_are_an_error) {
