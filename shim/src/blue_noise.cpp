@@ -118,8 +118,38 @@ SobolSet zOrderSobolSet(uint64_t dimensionKey, uint64_t pixelKey, uint32_t pixel
     prefix = (prefix << 2) | digit;
   }
   set.blockBase = morton;
+  set.exactScrambling = true;
   set.blockStride = levels == 0 ? 1u : 1u << (2 * levels);
   return set;
+}
+
+uint32_t CrossPixelStrata::subcell(uint64_t stratum) const {
+  // The pixel's finest Morton digit (which pixel of its 2 x 2 quad) picks the coarsest split of the stratum, so
+  // a quad fills the four quarters, a 4 x 4 block the sixteen sixteenths, and so on.
+  const uint64_t key = hashCombine(tileKey, stratum);
+  uint32_t subcell = 0, prefix = 1;
+  for (uint32_t level = 0; level < kCrossPixelLevels; ++level) {
+    const uint32_t digit = ((pixelX >> level) & 1u) | (((pixelY >> level) & 1u) << 1);
+    subcell = (subcell << 2) | kPermutations4[hashAt(key, prefix) % 24][digit];
+    prefix = (prefix << 2) | digit;
+  }
+  return subcell;
+}
+
+void CrossPixelStrata::place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const {
+  constexpr uint32_t T = kCrossPixelLevels;
+  const uint32_t s = subcell(stratum);
+  if (arity == 1) {
+    jitter[0] = (s << (32 - 2 * T)) | (jitter[0] >> (2 * T));
+    return;
+  }
+  uint32_t sx = 0, sy = 0;
+  for (uint32_t l = 0; l < T; ++l) {
+    sx |= ((s >> (2 * l)) & 1u) << l;
+    sy |= ((s >> (2 * l + 1)) & 1u) << l;
+  }
+  jitter[0] = (sx << (32 - T)) | (jitter[0] >> T);
+  jitter[1] = (sy << (32 - T)) | (jitter[1] >> T);
 }
 
 void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, float* shift) {

@@ -8,7 +8,13 @@
 //   consecutive blocks: together a (0, m + 2l, 2)-net, so the sum of their errors is far below that of
 //   independent sets — the error has little energy at low frequencies. Each pixel's own set is still a
 //   scrambled net, so per-pixel quality is unchanged.
-// - every other pattern: a per-pixel toroidal shift (Cranley-Patterson rotation) read from a 64 x 64
+// - stratified and independent: stratification across pixels. In a tile of 2^T x 2^T pixels (T = 6), every
+//   stratum (independent: the unit square, once per point index) is cut into 2^T x 2^T sub-cells (1D: 4^T), and
+//   the pixels of the tile take its sub-cells through the same digit-permuted Morton map as above, with a
+//   permutation hashed per stratum. A pixel's point is still uniform in its stratum and independent of its
+//   other points (each stratum has its own permutation), so every pixel's set has the plain pattern's
+//   distribution; the points of an aligned 2^l x 2^l square of pixels in one stratum are stratified 2^l x 2^l.
+// - poisson, poisson-seed and pmj02: a per-pixel toroidal shift (Cranley-Patterson rotation) read from a 64 x 64
 //   blue-noise mask (Georgiev & Fajardo 2016), over a base set shared by the pixels of a 64 x 64 tile.
 //   The mask is made once, deterministically, by void-and-cluster (Ulichney 1993). A shift uniform over
 //   [0,1)^d per pixel (mask value plus a hashed offset per tile and axis) keeps every sample uniform.
@@ -24,6 +30,18 @@ constexpr uint32_t kBlueNoiseMaskLog2 = 6;  // 64 x 64
 
 // The void-and-cluster mask: kBlueNoiseMaskSize^2 values (i + 0.5) / size^2, each rank once, row-major.
 const float* blueNoiseMask();
+
+constexpr uint32_t kCrossPixelLevels = 6;  // tiles of 64 x 64 pixels
+
+// Where pixel (x, y) puts its point inside a stratum shared by the pixels of its tile.
+struct CrossPixelStrata {
+  uint64_t tileKey;  // hashed from (seed, pattern, tile, dimension)
+  uint32_t pixelX, pixelY;
+  // The pixel's sub-cell of the stratum with this id: a Morton index in [0, 4^T), digits permuted per stratum.
+  uint32_t subcell(uint64_t stratum) const;
+  // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell.
+  void place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const;
+};
 
 // The sobol set of pixel (x, y) for a dimension: dimensionKey is hashed from (seed, dimension) (the tile is
 // folded in here), pixelKey from (seed, pixel, dimension).

@@ -12,11 +12,16 @@
 
 namespace stipple {
 
-void fillIndependent(uint64_t key, const Dimension& dim, float* out);
-void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out);
+struct CrossPixelStrata;  // blue_noise.h: with the blue-noise flag, stratified and independent take one
 
-void fillStratified(uint64_t key, const Dimension& dim, float* out);
-void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out);
+
+void fillIndependent(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue = nullptr);
+void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out,
+                      const CrossPixelStrata* blue = nullptr);
+
+void fillStratified(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue = nullptr);
+void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out,
+                     const CrossPixelStrata* blue = nullptr);
 
 void fillPoisson(uint64_t key, const Dimension& dim, float* out);
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out);
@@ -32,6 +37,7 @@ struct SobolSet {
   uint32_t scramble[3] = {0, 0, 0};
   uint32_t blockBase = 0;    // Sobol' block of the set's first M points
   uint32_t blockStride = 1;  // blocks between the set's block b and b + 1 (points past the set)
+  bool exactScrambling = false;  // exactOwenScramble instead of the Laine-Karras hash
   static SobolSet perPixel(uint64_t key);
 };
 void fillSobol(const SobolSet& set, const Dimension& dim, float* out);

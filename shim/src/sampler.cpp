@@ -6,6 +6,7 @@
 #include "patterns.h"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 namespace stipple {
@@ -25,8 +26,22 @@ uint64_t Sampler::key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
   return setKey(seed_, kPatternDomain[pattern_], pixelX, pixelY, d);
 }
 
+bool Sampler::maskShifted() const {
+  return blueNoise() && (pattern_ == STIPPLE_PATTERN_POISSON || pattern_ == STIPPLE_PATTERN_POISSON_SEED ||
+                         pattern_ == STIPPLE_PATTERN_PMJ02);
+}
+
+std::optional<CrossPixelStrata> Sampler::crossPixelStrata(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
+  if (!blueNoise() || (pattern_ != STIPPLE_PATTERN_STRATIFIED && pattern_ != STIPPLE_PATTERN_INDEPENDENT))
+    return std::nullopt;
+  const auto domain = static_cast<HashDomain>(static_cast<uint64_t>(kPatternDomain[pattern_]) ^
+                                              static_cast<uint64_t>(HashDomain::BlueNoiseTile));
+  return CrossPixelStrata{setKey(seed_, domain, pixelX >> kCrossPixelLevels, pixelY >> kCrossPixelLevels, d),
+                          pixelX, pixelY};
+}
+
 uint64_t Sampler::patternKey(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
-  if (!blueNoise()) return key(pixelX, pixelY, d);
+  if (!maskShifted()) return key(pixelX, pixelY, d);
   const auto domain = static_cast<HashDomain>(static_cast<uint64_t>(kPatternDomain[pattern_]) ^
                                               static_cast<uint64_t>(HashDomain::BlueNoiseTile));
   return setKey(seed_, domain, pixelX >> kBlueNoiseMaskLog2, pixelY >> kBlueNoiseMaskLog2, d);
@@ -41,7 +56,7 @@ SobolSet Sampler::sobolSet(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
 }
 
 void Sampler::blueNoiseShiftInPlace(uint32_t pixelX, uint32_t pixelY, uint32_t d, size_t points, float* out) const {
-  if (!blueNoise() || pattern_ == STIPPLE_PATTERN_SOBOL) return;
+  if (!maskShifted()) return;
   float shift[3];
   const uint32_t arity = dimensions_[d].arity;
   blueNoiseShift(patternKey(pixelX, pixelY, d), pixelX, pixelY, arity, shift);
@@ -51,9 +66,11 @@ void Sampler::blueNoiseShiftInPlace(uint32_t pixelX, uint32_t pixelY, uint32_t d
 void Sampler::fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const {
   const Dimension& dim = dimensions_[d];
   const uint64_t k = patternKey(pixelX, pixelY, d);
+  const std::optional<CrossPixelStrata> strata = crossPixelStrata(pixelX, pixelY, d);
+  const CrossPixelStrata* blue = strata ? &*strata : nullptr;
   switch (pattern_) {
-    case STIPPLE_PATTERN_INDEPENDENT: fillIndependent(k, dim, out); break;
-    case STIPPLE_PATTERN_STRATIFIED: fillStratified(k, dim, out); break;
+    case STIPPLE_PATTERN_INDEPENDENT: fillIndependent(k, dim, out, blue); break;
+    case STIPPLE_PATTERN_STRATIFIED: fillStratified(k, dim, out, blue); break;
     case STIPPLE_PATTERN_POISSON: fillPoisson(k, dim, out); break;
     case STIPPLE_PATTERN_SOBOL: fillSobol(sobolSet(pixelX, pixelY, d), dim, out); break;
     case STIPPLE_PATTERN_PMJ02: fillPmj02(k, dim, out); break;
@@ -76,12 +93,14 @@ void Sampler::sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uin
     return;
   }
   const SobolSet sobol = pattern_ == STIPPLE_PATTERN_SOBOL ? sobolSet(pixelX, pixelY, d) : SobolSet{};
+  const std::optional<CrossPixelStrata> strata = crossPixelStrata(pixelX, pixelY, d);
+  const CrossPixelStrata* blue = strata ? &*strata : nullptr;
   for (uint32_t j = 0; j < dim.count; ++j) {
     const uint32_t p = sampleIndex * dim.count + j;
     float* point = out + size_t(j) * dim.arity;
     switch (pattern_) {
-      case STIPPLE_PATTERN_INDEPENDENT: pointIndependent(k, dim, p, point); break;
-      case STIPPLE_PATTERN_STRATIFIED: pointStratified(k, dim, p, point); break;
+      case STIPPLE_PATTERN_INDEPENDENT: pointIndependent(k, dim, p, point, blue); break;
+      case STIPPLE_PATTERN_STRATIFIED: pointStratified(k, dim, p, point, blue); break;
       case STIPPLE_PATTERN_SOBOL: pointSobol(sobol, dim, p, point); break;
       case STIPPLE_PATTERN_PMJ02: pointPmj02(k, dim, p, point); break;
       default: pointPoisson(k, dim, p, point); break;

@@ -2,12 +2,14 @@
 #pragma once
 
 #include "dimension.h"
+#include "blue_noise.h"
 #include "patterns.h"
 
 #include <stipple/stipple.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace stipple {
@@ -33,6 +35,8 @@ class Sampler {
  private:
   uint64_t key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
   bool blueNoise() const { return (flags_ & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) != 0; }
+  bool maskShifted() const;  // blue noise by per-pixel toroidal shifts (poisson, poisson-seed, pmj02)
+  std::optional<CrossPixelStrata> crossPixelStrata(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
   // The key the pattern's set is drawn from: per pixel, or per blue-noise tile (shared, then shifted per pixel).
   uint64_t patternKey(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
   SobolSet sobolSet(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
