@@ -8,10 +8,18 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
                            const SampleLayout& layout)
     : shim_(shim), spp_(spp), layout_(layout) {
     const stipple_api& api = shim.api();
+    // "<name>" or "<name>+blue-noise" (the shim's STIPPLE_SAMPLER_FLAG_BLUE_NOISE); names come from the shim.
+    static const std::string kBlueNoise = "+blue-noise";
+    std::string name = pattern;
+    uint32_t flags = 0;
+    if (name.size() > kBlueNoise.size() && name.compare(name.size() - kBlueNoise.size(), kBlueNoise.size(), kBlueNoise) == 0) {
+        name.resize(name.size() - kBlueNoise.size());
+        flags |= STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+    }
     uint32_t patternId = 0;
-    if (api.pattern_from_name(pattern.c_str(), &patternId) != STIPPLE_OK)
-        throw ShimError("unknown pattern '" + pattern + "' (" + shim.lastError() +
-                        "); expected independent, stratified, poisson or poisson-seed");
+    if (api.pattern_from_name(name.c_str(), &patternId) != STIPPLE_OK)
+        throw ShimError("unknown pattern '" + pattern + "': " + shim.lastError() + " (optionally followed by " +
+                        kBlueNoise + ")");
     std::vector<stipple_dimension_desc> dims;
     for (const Dimension& d : layout.dimensions()) {
         stipple_dimension_desc desc{};
@@ -28,6 +36,7 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     desc.dimension_count = uint32_t(dims.size());
     desc.seed = seed;
     desc.dimensions = dims.data();
+    desc.flags = flags;
     if (api.sampler_create(&desc, &sampler_) != STIPPLE_OK)
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + shim.lastError());

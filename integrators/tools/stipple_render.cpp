@@ -19,7 +19,8 @@ using namespace stipple::render;
 namespace {
 
 const char* kUsage =
-    "usage: stipple-render <scene.yaml> [--pattern independent|stratified|poisson|poisson-seed] [--spp N]\n"
+    "usage: stipple-render <scene.yaml> [--pattern independent|stratified|poisson|poisson-seed|sobol|pmj02]\n"
+    "                      [--blue-noise] [--spp N]\n"
     "                      [--seed S] [--integrator path|direct|bdpt] [--width W] [--height H] [--max-depth D]\n"
     "                      [--threads T] [--exposure STOPS] [--shim PATH] [--print-layout] [-o out.exr]\n";
 
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
     bool printLayout = false;
     float exposure = 0;
     bool patternGiven = false;
+    bool blueNoise = false;
     try {
         for (int i = 1; i < argc; ++i) {
             std::string a = argv[i];
@@ -82,10 +84,10 @@ int main(int argc, char** argv) {
             } else if (a == "--pattern") {
                 options.pattern = value();
                 patternGiven = true;
-                if (options.pattern != "independent" && options.pattern != "stratified" && options.pattern != "poisson" &&
-                    options.pattern != "poisson-seed")
-                    throw UsageError("option --pattern: expected independent, stratified, poisson or poisson-seed, got '" +
-                                     options.pattern + "'");
+                // Names are the shim's (stipple_pattern_name): checked when the shim is loaded.
+                if (options.pattern.empty()) throw UsageError("option --pattern: expected a pattern name");
+            } else if (a == "--blue-noise") {
+                blueNoise = true;
             } else if (a == "--spp") {
                 options.spp = uint32_t(parseInt(a, value(), 1, 1 << 20));
             } else if (a == "--seed") {
@@ -117,6 +119,7 @@ int main(int argc, char** argv) {
             }
         }
         if (scenePath.empty()) throw UsageError("no scene file given");
+        if (blueNoise && options.pattern.find("+blue-noise") == std::string::npos) options.pattern += "+blue-noise";
         if (!output.empty() && std::filesystem::path(output).extension() != ".exr")
             throw UsageError("option -o: expected a path ending in .exr, got '" + output + "'");
     } catch (const UsageError& e) {
