@@ -118,7 +118,6 @@ SobolSet zOrderSobolSet(uint64_t dimensionKey, uint64_t pixelKey, uint32_t pixel
     prefix = (prefix << 2) | digit;
   }
   set.blockBase = morton;
-  set.exactScrambling = true;
   set.blockStride = levels == 0 ? 1u : 1u << (2 * levels);
   return set;
 }

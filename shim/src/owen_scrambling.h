@@ -35,24 +35,6 @@ constexpr uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
   return reverseBits32(laineKarrasPermutation(reverseBits32(x), seed));
 }
 
-// Exact Owen scrambling of the top 24 digits (pbrt-v4's OwenScrambler): digit t is flipped by a hash of the
-// digits above it. Costlier than the Laine-Karras hash (24 hashes), but free of its correlations between the
-// scrambles of neighbouring subtrees, which matter when many sets share one scrambling (blue noise).
-constexpr uint32_t exactOwenScramble(uint32_t v, uint32_t seed) {
-  if (seed & 1u) v ^= 1u << 31;
-  for (uint32_t b = 1; b < 24; ++b) {
-    const uint32_t above = v >> (32 - b);  // the b digits above digit b
-    uint32_t h = (above | (1u << b)) ^ seed;  // the marker bit keeps prefixes of different lengths apart
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    if (h & 1u) v ^= 1u << (31 - b);
-  }
-  return v;
-}
-
 // A 32-bit fixed-point fraction as a float in [0, 1): the top 24 bits, so 1.0 cannot occur.
 constexpr float fixedToUnitFloat(uint32_t x) { return static_cast<float>(x >> 8) * 0x1p-24f; }
 

@@ -27,8 +27,7 @@ inline void sobolPoint(const SobolSet& set, const Dimension& dim, uint32_t p, fl
   const uint32_t index = (dim.log2Length >= 32 ? 0u : block << dim.log2Length) |
                          (nestedUniformScramble(r, set.indexSeed) & lowMask);
   for (uint32_t c = 0; c < dim.arity; ++c)
-    out[c] = fixedToUnitFloat(set.exactScrambling ? exactOwenScramble(sobolSample(index, c), set.scramble[c])
-                                                  : nestedUniformScramble(sobolSample(index, c), set.scramble[c]));
+    out[c] = fixedToUnitFloat(nestedUniformScramble(sobolSample(index, c), set.scramble[c]));
 }
 
 }  // namespace

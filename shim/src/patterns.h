@@ -37,7 +37,6 @@ struct SobolSet {
   uint32_t scramble[3] = {0, 0, 0};
   uint32_t blockBase = 0;    // Sobol' block of the set's first M points
   uint32_t blockStride = 1;  // blocks between the set's block b and b + 1 (points past the set)
-  bool exactScrambling = false;  // exactOwenScramble instead of the Laine-Karras hash
   static SobolSet perPixel(uint64_t key);
 };
 void fillSobol(const SobolSet& set, const Dimension& dim, float* out);

@@ -7,7 +7,10 @@
 // Columns are 32-bit fixed-point direction numbers v_j = m_j / 2^j, column j for index bit j.
 #pragma once
 
+#include "owen_scrambling.h"
+
 #include <array>
+#include <bit>
 #include <cstdint>
 
 namespace stipple {
@@ -44,10 +47,11 @@ inline constexpr std::array<std::array<uint32_t, 32>, 3> kSobolMatrices = [] {
 }();
 
 // The index-th point's coordinate in dimension d (0..2) as a 32-bit fraction.
+// Dimension 0 is the bit reversal; the others XOR the columns of the index's set bits.
 constexpr uint32_t sobolSample(uint32_t index, uint32_t d) {
+  if (d == 0) return reverseBits32(index);
   uint32_t result = 0;
-  for (uint32_t j = 0; index != 0; index >>= 1, ++j)
-    if (index & 1u) result ^= kSobolMatrices[d][j];
+  for (; index != 0; index &= index - 1) result ^= kSobolMatrices[d][std::countr_zero(index)];
   return result;
 }
 
