@@ -1,6 +1,7 @@
 #include "pixel_sampler.h"
 
 #include <chrono>
+#include <stdexcept>
 
 namespace stipple::render {
 
@@ -18,8 +19,9 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     }
     uint32_t patternId = 0;
     if (api.pattern_from_name(name.c_str(), &patternId) != STIPPLE_OK)
-        throw ShimError("unknown pattern '" + pattern + "': " + shim.lastError() + " (optionally followed by " +
-                        kBlueNoise + ")");
+        // A bad name is the caller's argument, not a shim failure (stipple-render exits with 2 on it).
+        throw std::invalid_argument("unknown pattern '" + pattern + "': " + shim.lastError() +
+                                    " (optionally followed by " + kBlueNoise + ")");
     std::vector<stipple_dimension_desc> dims;
     for (const Dimension& d : layout.dimensions()) {
         stipple_dimension_desc desc{};
