@@ -21,7 +21,7 @@ using namespace stipple::render;
 namespace {
 
 const char* kUsage =
-    "usage: stipple-render <scene.yaml> [--pattern P] [--spp N] [--seed S] [--integrator I]\n"
+    "usage: stipple-render <scene.yaml> [--pattern P] [--blue-noise] [--spp N] [--seed S] [--integrator I]\n"
     "                      [--width W] [--height H] [--max-depth D]\n"
     "                      [--threads T] [--exposure STOPS] [--shim PATH] [--print-layout] [-o out.exr]\n"
     "       stipple-render --version | --help\n";
@@ -72,6 +72,7 @@ int main(int argc, char** argv) {
     bool printLayout = false;
     float exposure = 0;
     bool patternGiven = false;
+    bool blueNoise = false;
     try {
         for (int i = 1; i < argc; ++i) {
             std::string a = argv[i];
@@ -88,6 +89,8 @@ int main(int argc, char** argv) {
             } else if (a == "--pattern") {
                 options.pattern = value();
                 patternGiven = true;
+            } else if (a == "--blue-noise") {
+                blueNoise = true;
             } else if (a == "--spp") {
                 options.spp = uint32_t(parseInt(a, value(), 1, 1 << 20));
             } else if (a == "--seed") {
@@ -119,6 +122,7 @@ int main(int argc, char** argv) {
             }
         }
         if (scenePath.empty()) throw UsageError("no scene file given");
+        if (blueNoise && options.pattern.find("+blue-noise") == std::string::npos) options.pattern += "+blue-noise";
         if (!output.empty() && std::filesystem::path(output).extension() != ".exr")
             throw UsageError("option -o: expected a path ending in .exr, got '" + output + "'");
     } catch (const UsageError& e) {
@@ -132,7 +136,9 @@ int main(int argc, char** argv) {
             known = patternNames(options.shim);
         } catch (const std::exception&) {
         }
-        if (!known.empty() && std::find(known.begin(), known.end(), options.pattern) == known.end()) {
+        // "<name>+blue-noise" asks for the shim's blue-noise flag on pattern <name>.
+        const std::string base = options.pattern.substr(0, options.pattern.find("+blue-noise"));
+        if (!known.empty() && std::find(known.begin(), known.end(), base) == known.end()) {
             std::string list;
             for (const std::string& n : known) list += (list.empty() ? "" : ", ") + n;
             std::cerr << "stipple-render: option --pattern: expected one of " << list << ", got '" << options.pattern

@@ -17,7 +17,8 @@ using stipple::requireNonNull;
 namespace {
 
 constexpr uint32_t kVersionPatch = 0;
-constexpr const char* kPatternNames[STIPPLE_PATTERN_COUNT] = {"independent", "stratified", "poisson", "poisson-seed"};
+constexpr const char* kPatternNames[STIPPLE_PATTERN_COUNT] = {"independent",  "stratified", "poisson",
+                                                               "poisson-seed", "sobol",      "pmj02"};
 
 const stipple::Sampler& checkedSampler(stipple_sampler sampler) {
   requireNonNull(sampler, "sampler");
@@ -80,7 +81,7 @@ STIPPLE_API stipple_status stipple_pattern_from_name(const char* name, uint32_t*
     const size_t length = strnlen(name, 64);
     throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                 "name is \"" + std::string(name, length) + (length == 64 ? "...\"" : "\"") +
-                    "; expected \"independent\", \"stratified\", \"poisson\" or \"poisson-seed\"");
+                    "; expected \"independent\", \"stratified\", \"poisson\", \"poisson-seed\", \"sobol\" or \"pmj02\"");
   });
 }
 

@@ -1,6 +1,7 @@
 // dimension.h — one validated entry of a sampler's dimension layout, with what its pattern precomputed.
 #pragma once
 
+#include "pmj02_family.h"
 #include "poisson_cache.h"
 #include "strata_grid.h"
 
@@ -17,6 +18,8 @@ struct Dimension {
   std::string name;
   StrataGrid grid;                                // stratified only
   std::shared_ptr<const PoissonFamily> poisson;  // poisson only
+  uint32_t log2Length = 0;                        // sobol, pmj02: L = 2^log2Length is the least power of two >= M
+  std::shared_ptr<const Pmj02Family> pmj02;       // pmj02 only
 
   uint32_t floatsPerPixel() const { return setSize * arity; }
   uint32_t floatsPerSample() const { return count * arity; }

@@ -38,6 +38,9 @@ enum class HashDomain : uint64_t {
   PoissonSeed = 0x5eed5eedc0ffee04ull,
   PastLayout = 0x9a57a1e0c0ffee05ull,
   PoissonCache = 0xcac4e5e7c0ffee06ull,
+  Sobol = 0x50b01000c0ffee09ull,
+  Pmj02 = 0x9a1020c0c0ffee0aull,
+  BlueNoiseTile = 0xb1e7111ec0ffee0bull,  // XORed onto a pattern's domain for the keys of blue-noise tiles
 };
 
 // Key of one (pixel, dimension) set for one pattern domain.

@@ -2,6 +2,7 @@
 //
 // Per (pixel, dimension) the key gives: the permutation of sample order (so sample i of this dimension is not
 // tied to sample i of another), the choice of padded lines and hole offset, and the jitter of every point.
+#include "blue_noise.h"
 #include "hash.h"
 #include "patterns.h"
 #include "permutation.h"
@@ -34,30 +35,30 @@ inline float jittered(uint32_t cell, uint32_t strata, double inverseStrata, uint
   return value;
 }
 
-inline void stratifiedPoint(const StratifiedSet& set, const Dimension& dim, uint32_t p, float* out) {
+inline void stratifiedPoint(const StratifiedSet& set, const Dimension& dim, uint32_t p, float* out,
+                            const CrossPixelStrata* blue) {
   const StrataGrid& grid = dim.grid;
   const uint32_t q = permuteIndex(p, dim.setSize, set.orderSeed);
-  uint32_t cell[3];
+  uint32_t cell[3] = {0, 0, 0};
   grid.cellOf(q, set.lineSeed, set.holeOffset, cell);
   // One 64-bit hash jitters two axes (32 bits each).
   const uint64_t bits01 = hashAt(set.jitterKey, uint64_t(q) * 2);
-  out[0] = jittered(cell[0], grid.axis[0], grid.inverseAxis[0], static_cast<uint32_t>(bits01 >> 32));
-  if (dim.arity == 1) return;
-  out[1] = jittered(cell[1], grid.axis[1], grid.inverseAxis[1], static_cast<uint32_t>(bits01));
-  if (dim.arity == 2) return;
-  const uint64_t bits2 = hashAt(set.jitterKey, uint64_t(q) * 2 + 1);
-  out[2] = jittered(cell[2], grid.axis[2], grid.inverseAxis[2], static_cast<uint32_t>(bits2 >> 32));
+  uint32_t jitter[3] = {static_cast<uint32_t>(bits01 >> 32), static_cast<uint32_t>(bits01), 0};
+  if (dim.arity == 3) jitter[2] = static_cast<uint32_t>(hashAt(set.jitterKey, uint64_t(q) * 2 + 1) >> 32);
+  // Blue noise: the stratum (named by its cell, the same in every pixel) is shared with the tile's pixels.
+  if (blue) blue->place((uint64_t(cell[2]) << 42) ^ (uint64_t(cell[1]) << 21) ^ cell[0], dim.arity, jitter);
+  for (uint32_t c = 0; c < dim.arity; ++c) out[c] = jittered(cell[c], grid.axis[c], grid.inverseAxis[c], jitter[c]);
 }
 
 }  // namespace
 
-void fillStratified(uint64_t key, const Dimension& dim, float* out) {
+void fillStratified(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue) {
   const StratifiedSet set(key, dim.grid);
-  for (uint32_t p = 0; p < dim.setSize; ++p) stratifiedPoint(set, dim, p, out + size_t(p) * dim.arity);
+  for (uint32_t p = 0; p < dim.setSize; ++p) stratifiedPoint(set, dim, p, out + size_t(p) * dim.arity, blue);
 }
 
-void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
-  stratifiedPoint(StratifiedSet(key, dim.grid), dim, p, out);
+void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
+  stratifiedPoint(StratifiedSet(key, dim.grid), dim, p, out, blue);
 }
 
 }  // namespace stipple

@@ -6,6 +6,7 @@
 #include "error.h"
 #include "sampler.h"
 
+#include <bit>
 #include <cstring>
 #include <string>
 
@@ -14,7 +15,7 @@ namespace stipple {
 namespace {
 
 std::string patternList() {
-  return "0 (independent), 1 (stratified), 2 (poisson) or 3 (poisson-seed)";
+  return "0 (independent), 1 (stratified), 2 (poisson), 3 (poisson-seed), 4 (sobol) or 5 (pmj02)";
 }
 
 void requireZeroTail(const void* object, size_t knownSize, size_t structSize, const std::string& argument) {
@@ -60,6 +61,15 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
   }
   if (pattern == STIPPLE_PATTERN_STRATIFIED) dim.grid = StrataGrid::choose(dim.arity, dim.setSize);
   if (pattern == STIPPLE_PATTERN_POISSON) dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize);
+  dim.log2Length = static_cast<uint32_t>(std::bit_width(dim.setSize - 1));
+  if (pattern == STIPPLE_PATTERN_PMJ02) {
+    if (dim.log2Length > Pmj02Family::kMaxLog2Length)
+      throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                  argument + ": count * samples_per_pixel = " + std::to_string(dim.setSize) +
+                      "; the pmj02 pattern serves sets of at most " +
+                      std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
+    dim.pmj02 = Pmj02Family::acquire(dim.log2Length);
+  }
   return dim;
 }
 
@@ -83,8 +93,12 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
                                                 "; expected 1.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
                                                 " (an empty layout has nothing to sample)");
   requireNonNull(desc.dimensions, "desc->dimensions");
-  if (desc.flags != 0)
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "desc->flags is " + std::to_string(desc.flags) + "; expected 0");
+  constexpr uint32_t kKnownFlags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+  if ((desc.flags & ~kKnownFlags) != 0)
+    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                "desc->flags is " + std::to_string(desc.flags) + "; unknown bits " +
+                    std::to_string(desc.flags & ~kKnownFlags) +
+                    " (this library knows only STIPPLE_SAMPLER_FLAG_BLUE_NOISE = 1)");
   if (desc.reserved != 0)
     throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                 "desc->reserved is " + std::to_string(desc.reserved) + "; expected 0");
@@ -109,7 +123,7 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
     requireZeroTail(bytes, kDimensionSize, stride, "desc->dimensions[" + std::to_string(d) + "]");
     dimensions.push_back(makeDimension(entry, d, desc.pattern, desc.samples_per_pixel));
   }
-  return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions));
+  return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions), desc.flags);
 }
 
 }  // namespace stipple

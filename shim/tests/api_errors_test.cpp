@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE(version_and_pattern_names) {
     BOOST_CHECK_EQUAL(stipple_pattern_from_name(name, &back), STIPPLE_OK);
     BOOST_CHECK_EQUAL(back, p);
   }
-  expectError(stipple_pattern_name(STIPPLE_PATTERN_COUNT, &name), STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is 4");
+  expectError(stipple_pattern_name(STIPPLE_PATTERN_COUNT, &name), STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is 6");
   expectError(stipple_pattern_name(0, nullptr), STIPPLE_ERROR_NULL_ARGUMENT, "out_name");
 }
 
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(create_rejects_bad_descriptions) {
       {"N = 0", [](Layout& l) { l.desc.samples_per_pixel = 0; }, STIPPLE_ERROR_OUT_OF_RANGE, "samples_per_pixel is 0"},
       {"N too large", [](Layout& l) { l.desc.samples_per_pixel = STIPPLE_MAX_SAMPLES_PER_PIXEL + 1; },
        STIPPLE_ERROR_OUT_OF_RANGE, "samples_per_pixel"},
-      {"unknown pattern", [](Layout& l) { l.desc.pattern = 4; }, STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is 4"},
+      {"unknown pattern", [](Layout& l) { l.desc.pattern = STIPPLE_PATTERN_COUNT; }, STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is 6"},
       {"unknown pattern, large", [](Layout& l) { l.desc.pattern = 0xffffffffu; }, STIPPLE_ERROR_INVALID_ARGUMENT,
        "pattern"},
       {"empty layout", [](Layout& l) { l.desc.dimension_count = 0; }, STIPPLE_ERROR_OUT_OF_RANGE,
@@ -110,7 +110,7 @@ BOOST_AUTO_TEST_CASE(create_rejects_bad_descriptions) {
       {"desc struct too small", [](Layout& l) { l.desc.struct_size = sizeof(stipple_sampler_desc) - 8; },
        STIPPLE_ERROR_STRUCT_SIZE, "desc->struct_size"},
       {"desc struct zero", [](Layout& l) { l.desc.struct_size = 0; }, STIPPLE_ERROR_STRUCT_SIZE, "struct_size is 0"},
-      {"flags", [](Layout& l) { l.desc.flags = 1; }, STIPPLE_ERROR_INVALID_ARGUMENT, "desc->flags"},
+      {"unknown flag bit", [](Layout& l) { l.desc.flags = 2; }, STIPPLE_ERROR_INVALID_ARGUMENT, "unknown bits 2"},
       {"reserved", [](Layout& l) { l.desc.reserved = 3; }, STIPPLE_ERROR_INVALID_ARGUMENT, "desc->reserved"},
       {"arity 0", [](Layout& l) { l.dims[1].arity = 0; }, STIPPLE_ERROR_INVALID_ARGUMENT, "dimensions[1].arity is 0"},
       {"arity 4", [](Layout& l) { l.dims[0].arity = 4; }, STIPPLE_ERROR_INVALID_ARGUMENT, "dimensions[0].arity is 4"},

@@ -16,7 +16,7 @@ using namespace stipple::test;
 using namespace stipple::testing;
 
 BOOST_AUTO_TEST_CASE(dimensions_and_pixels_are_uncorrelated) {
-  const double alpha = sidak(0.01, 4 * 2 * 2);
+  const double alpha = sidak(0.01, kPatternCount * 2 * 2);
   for (uint32_t pattern : kAllPatterns) {
     for (uint32_t n : {16u, 256u}) {
       const uint32_t pixels = 51200 / n;  // 51200 pairs: 800 per cell

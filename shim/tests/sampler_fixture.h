@@ -78,7 +78,8 @@ inline const char* patternName(uint32_t pattern) {
   return name;
 }
 
-constexpr uint32_t kAllPatterns[] = {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON,
-                                     STIPPLE_PATTERN_POISSON_SEED};
+constexpr uint32_t kAllPatterns[] = {STIPPLE_PATTERN_INDEPENDENT,  STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON,
+                                     STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,      STIPPLE_PATTERN_PMJ02};
+constexpr int kPatternCount = int(sizeof kAllPatterns / sizeof kAllPatterns[0]);
 
 }  // namespace stipple::test

@@ -33,7 +33,7 @@ double exactValue(uint32_t arity) {
 } // namespace
 
 BOOST_AUTO_TEST_CASE(estimates_are_unbiased) {
-  constexpr int kTests = 4 * 3 * 2;
+  constexpr int kTests = kPatternCount * 3 * 2;
   constexpr uint32_t kPixels = 512;
   const double alpha = sidak(0.01, kTests);
   for (uint32_t pattern : kAllPatterns) {

@@ -10,7 +10,7 @@
 using namespace stipple::test;
 using namespace stipple::testing;
 
-constexpr int kTests = 4 * 3 * 4 + 1;
+constexpr int kTests = kPatternCount * 3 * 4 + 1;
 
 BOOST_AUTO_TEST_CASE(each_sample_is_uniform) {
   const uint32_t counts[] = {1, 7, 16, 97};

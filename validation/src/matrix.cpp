@@ -94,8 +94,13 @@ struct Parser {
     std::string pattern(const YAML::Node& node) const {
         auto p = get<std::string>(node, "pattern");
         const auto& known = vocabulary.patterns;
-        if (std::find(known.begin(), known.end(), p) == known.end())
-            fail(node, "unknown pattern '" + p + "' (known: " + joined(known) + ")");
+        // "<pattern>+blue-noise": the shim's screen-space blue-noise option on that pattern.
+        static const std::string kBlueNoise = "+blue-noise";
+        std::string base = p;
+        if (base.size() > kBlueNoise.size() && base.ends_with(kBlueNoise)) base.resize(base.size() - kBlueNoise.size());
+        if (std::find(known.begin(), known.end(), base) == known.end())
+            fail(node, "unknown pattern '" + p + "' (known: " + joined(known) + ", each optionally followed by " +
+                           kBlueNoise + ")");
         return p;
     }
     const YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& what) const {

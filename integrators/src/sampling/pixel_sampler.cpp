@@ -1,6 +1,7 @@
 #include "sampling/pixel_sampler.h"
 
 #include <chrono>
+#include <stdexcept>
 
 namespace stipple::render {
 
@@ -8,11 +9,21 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
                            const SampleLayout& layout)
     : shim_(shim), spp_(spp), layout_(layout) {
     const stipple_api& api = shim.api();
+    // "<name>" or "<name>+blue-noise" (the shim's STIPPLE_SAMPLER_FLAG_BLUE_NOISE); names come from the shim.
+    static const std::string kBlueNoise = "+blue-noise";
+    std::string name = pattern;
+    uint32_t flags = 0;
+    if (name.size() > kBlueNoise.size() && name.compare(name.size() - kBlueNoise.size(), kBlueNoise.size(), kBlueNoise) == 0) {
+        name.resize(name.size() - kBlueNoise.size());
+        flags |= STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+    }
     uint32_t patternId = 0;
-    if (api.pattern_from_name(pattern.c_str(), &patternId) != STIPPLE_OK) {
+    if (api.pattern_from_name(name.c_str(), &patternId) != STIPPLE_OK) {
+        // A bad name is the caller's argument, not a shim failure (stipple-render exits with 2 on it).
         std::string known;
-        for (const std::string& name : shim.patternNames()) known += (known.empty() ? "" : ", ") + name;
-        throw ShimError("unknown pattern '" + pattern + "' (" + shim.lastError() + "); expected one of " + known);
+        for (const std::string& n : shim.patternNames()) known += (known.empty() ? "" : ", ") + n;
+        throw std::invalid_argument("unknown pattern '" + pattern + "' (" + shim.lastError() + "); expected one of " +
+                                    known + ", optionally followed by " + kBlueNoise);
     }
     std::vector<stipple_dimension_desc> dims;
     for (const Dimension& d : layout.dimensions()) {
@@ -30,6 +41,7 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     desc.dimension_count = uint32_t(dims.size());
     desc.seed = seed;
     desc.dimensions = dims.data();
+    desc.flags = flags;
     if (api.sampler_create(&desc, &sampler_) != STIPPLE_OK)
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + shim.lastError());

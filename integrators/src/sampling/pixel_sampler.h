@@ -15,7 +15,8 @@ class PixelSamples;
 
 class PixelSampler {
 public:
-    // Throws ShimError with the shim's message when the pattern or layout is rejected.
+    // pattern: a shim pattern name, optionally followed by "+blue-noise". Throws std::invalid_argument for an
+    // unknown name and ShimError with the shim's message when the layout is rejected.
     PixelSampler(const ShimLibrary& shim, const std::string& pattern, uint32_t spp, uint64_t seed,
                  const SampleLayout& layout);
     ~PixelSampler();

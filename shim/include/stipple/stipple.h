@@ -71,7 +71,15 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_STRATIFIED    1u  /* jittered strata; any N (see README for non-square N) */
 #define STIPPLE_PATTERN_POISSON       2u  /* high-quality toroidal Poisson disk sets, amortised */
 #define STIPPLE_PATTERN_POISSON_SEED  3u  /* the study's dart throwing (Algorithm 1), generated per set */
-#define STIPPLE_PATTERN_COUNT         4u
+#define STIPPLE_PATTERN_SOBOL         4u  /* Owen-scrambled Sobol' (hash-based, Burley 2020), padded per dimension */
+#define STIPPLE_PATTERN_PMJ02         5u  /* progressive multi-jittered (0,2) sequences; sets <= 65536 points */
+#define STIPPLE_PATTERN_COUNT         6u
+
+/* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
+/* Screen-space blue noise: neighbouring pixels' sets are decorrelated so that the per-pixel error is spread
+ * as blue noise over the image (sobol: Z-order blocks of one sequence; other patterns: toroidal shifts from a
+ * blue-noise mask). Every sample stays uniformly distributed. */
+#define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
 
 /* ---- limits ----------------------------------------------------------------------------------------- */
 #define STIPPLE_MAX_SAMPLES_PER_PIXEL  (1u << 20)  /* N */
@@ -98,7 +106,7 @@ typedef struct stipple_sampler_desc {
   uint32_t dimension_count;   /* 1..STIPPLE_MAX_DIMENSIONS */
   uint64_t seed;              /* any value */
   const stipple_dimension_desc* dimensions; /* dimension_count entries, copied */
-  uint32_t flags;             /* must be 0 */
+  uint32_t flags;             /* STIPPLE_SAMPLER_FLAG_* bits; unknown bits are rejected */
   uint32_t reserved;          /* must be 0 */
 } stipple_sampler_desc;
 
@@ -127,7 +135,8 @@ STIPPLE_API const char* stipple_last_error_message(void);
 
 STIPPLE_API stipple_status stipple_get_version(uint32_t* major, uint32_t* minor, uint32_t* patch);
 
-/* "independent", "stratified", "poisson", "poisson-seed" <-> STIPPLE_PATTERN_*. Names are static strings. */
+/* "independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02" <-> STIPPLE_PATTERN_*. Names are
+ * static strings. */
 STIPPLE_API stipple_status stipple_pattern_from_name(const char* name, uint32_t* out_pattern);
 STIPPLE_API stipple_status stipple_pattern_name(uint32_t pattern, const char** out_name);
 

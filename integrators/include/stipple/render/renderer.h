@@ -46,7 +46,7 @@ struct Image {
 
 // Everything a render can be told; zero / empty means "the scene's default".
 struct RenderOptions {
-    std::string pattern = "stratified"; // one of patternNames(shim)
+    std::string pattern = "stratified"; // a shim pattern name (stipple_pattern_name), optionally "+blue-noise"
     uint32_t spp = 0;
     uint64_t seed = 1;
     int width = 0;
