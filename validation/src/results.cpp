@@ -49,7 +49,7 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         c.scene = rows[i].scene;
         c.pattern = rows[i].pattern;
         c.spp = rows[i].spp;
-        std::vector<double> rms, rmsMeasured, mse, mseCorrected, render, sampler;
+        std::vector<double> rms, rmsMeasured, mse, mseCorrected, render, sampler, cpu;
         for (size_t k = i; k < j; ++k) {
             const auto& r = rows[k];
             rms.push_back(r.rmsCorrected);
@@ -58,6 +58,7 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
             mseCorrected.push_back(r.mseCorrected);
             render.push_back(r.renderSeconds);
             sampler.push_back(r.samplerSeconds);
+            cpu.push_back(r.cpuSeconds);
             c.floorLimitedSeeds += r.floorLimited;
             c.nonFinitePixels += r.nonFinitePixels;
         }
@@ -76,6 +77,7 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         c.meanMseCorrected = mean(mseCorrected);
         c.medianRenderSeconds = median(render);
         c.medianSamplerSeconds = median(sampler);
+        c.medianCpuSeconds = median(cpu);
         double denom = c.meanMseCorrected * c.medianRenderSeconds;
         c.efficiency = denom > 0 ? 1.0 / denom : std::numeric_limits<double>::infinity();
         cells.push_back(c);
@@ -142,6 +144,12 @@ std::string jsonNumber(double v) {
     return buf;
 }
 
+std::string jsonArray(const std::vector<double>& values) {
+    std::string s = "[";
+    for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + jsonNumber(values[i]);
+    return s + "]";
+}
+
 void writeTextFile(const std::string& path, const std::string& text) {
     std::string tmp = path + ".tmp";
     {
@@ -157,14 +165,14 @@ void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows
     // Times come last, so a comparison that ignores them can cut the columns before.
     std::ostringstream o;
     o << "scene,pattern,spp,seed,width,height,rms,mse,rms_corrected,mse_corrected,floor_limited,"
-         "non_finite_pixels,non_finite_samples,render_seconds,sampler_seconds\n";
+         "non_finite_pixels,non_finite_samples,render_seconds,sampler_seconds,cpu_seconds\n";
     char buf[512];
     for (const auto& r : rows) {
-        std::snprintf(buf, sizeof buf, "%s,%s,%u,%llu,%d,%d,%.9g,%.9g,%.9g,%.9g,%d,%llu,%llu,%.6f,%.6f\n",
+        std::snprintf(buf, sizeof buf, "%s,%s,%u,%llu,%d,%d,%.9g,%.9g,%.9g,%.9g,%d,%llu,%llu,%.6f,%.6f,%.6f\n",
                       r.scene.c_str(), r.pattern.c_str(), r.spp, (unsigned long long)r.seed, r.width, r.height, r.rms,
                       r.mse, r.rmsCorrected, r.mseCorrected, int(r.floorLimited),
                       (unsigned long long)r.nonFinitePixels, (unsigned long long)r.nonFiniteSamples, r.renderSeconds,
-                      r.samplerSeconds);
+                      r.samplerSeconds, r.cpuSeconds);
         o << buf;
     }
     writeTextFile(path, o.str());
@@ -218,7 +226,9 @@ void writeResultsJson(const std::string& path, const Results& results, const std
           << ", \"floor_limited\": " << (r.floorLimited ? "true" : "false")
           << ", \"non_finite_pixels\": " << r.nonFinitePixels << ", \"non_finite_samples\": " << r.nonFiniteSamples
           << ", \"render_seconds\": " << jsonNumber(r.renderSeconds)
-          << ", \"sampler_seconds\": " << jsonNumber(r.samplerSeconds) << "}";
+          << ", \"sampler_seconds\": " << jsonNumber(r.samplerSeconds)
+          << ", \"cpu_seconds\": " << jsonNumber(r.cpuSeconds) << ", \"region_mse\": " << jsonArray(r.regionMse)
+          << ", \"region_mse_corrected\": " << jsonArray(r.regionMseCorrected) << "}";
     }
     o << "\n  ],\n  \"cells\": [";
     for (size_t i = 0; i < cells.size(); ++i) {
@@ -230,6 +240,7 @@ void writeResultsJson(const std::string& path, const Results& results, const std
           << ", \"mean_mse_corrected\": " << jsonNumber(c.meanMseCorrected)
           << ", \"median_render_seconds\": " << jsonNumber(c.medianRenderSeconds)
           << ", \"median_sampler_seconds\": " << jsonNumber(c.medianSamplerSeconds)
+          << ", \"median_cpu_seconds\": " << jsonNumber(c.medianCpuSeconds)
           << ", \"efficiency\": " << jsonNumber(c.efficiency) << ", \"floor_limited_seeds\": " << c.floorLimitedSeeds
           << ", \"non_finite_pixels\": " << c.nonFinitePixels << "}";
     }
@@ -307,6 +318,9 @@ Results readResultsJson(const std::string& path) {
             row.nonFiniteSamples = n["non_finite_samples"].as<uint64_t>(0);
             row.renderSeconds = number(n["render_seconds"]);
             row.samplerSeconds = number(n["sampler_seconds"]);
+            row.cpuSeconds = n["cpu_seconds"] ? number(n["cpu_seconds"]) : 0;  // absent in older files
+            for (const auto& v : n["region_mse"]) row.regionMse.push_back(number(v));
+            for (const auto& v : n["region_mse_corrected"]) row.regionMseCorrected.push_back(number(v));
             r.rows.push_back(row);
         }
     } catch (const YAML::Exception& e) {

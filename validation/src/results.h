@@ -23,6 +23,8 @@ struct ResultRow {
     uint64_t nonFinitePixels = 0;              // excluded from the error
     uint64_t nonFiniteSamples = 0;             // reported by the renderer's film
     double renderSeconds = 0, samplerSeconds = 0;
+    double cpuSeconds = 0;                     // thread CPU seconds of the render loop, summed over its workers
+    std::vector<double> regionMse, regionMseCorrected; // per region of the scene (matrix order), as mse above
 };
 
 struct SceneInfo {
@@ -59,7 +61,7 @@ struct CellAggregate {
     SampleSummary logRmsMeasured;    // of log(rms), before the floor correction, over the seeds where it is > 0
     double meanRmsMeasured = 0;      // before the floor correction
     double meanMse = 0, meanMseCorrected = 0;
-    double medianRenderSeconds = 0, medianSamplerSeconds = 0;
+    double medianRenderSeconds = 0, medianSamplerSeconds = 0, medianCpuSeconds = 0;
     double efficiency = 0;           // 1 / (mean corrected MSE · median render seconds)
     int floorLimitedSeeds = 0;
     uint64_t nonFinitePixels = 0;
@@ -92,6 +94,7 @@ Results readResultsJson(const std::string& path);
 // Helpers shared by the report writers.
 std::string jsonString(const std::string& s);
 std::string jsonNumber(double v);
+std::string jsonArray(const std::vector<double>& values);
 // Writes `text` to `path` through a temporary file renamed into place.
 void writeTextFile(const std::string& path, const std::string& text);
 

@@ -12,6 +12,7 @@
 #include "image_metrics.h"
 #include "progress.h"
 #include "reference_cache.h"
+#include "regions.h"
 #include "report.h"
 
 namespace stipple::validation {
@@ -46,6 +47,17 @@ void writeCrop(const std::string& reportDir, const std::string& scene, const std
     fs::create_directories(fs::path(reportDir) / "crops");
     render::writePng((fs::path(reportDir) / cropFile(scene, column)).string(),
                      cropImage(image, x, y, size, size, crop.scale));
+}
+
+// The study's Table 1 at a size a person can judge: each region magnified to ≥ 128 px on its short side.
+void writeRegionCrops(const std::string& reportDir, const MatrixScene& scene, const std::string& column,
+                      const render::Image& image) {
+    for (const Region& region : scene.regions) {
+        const int scale = regionCropScale(pixelRect(region, image.width, image.height));
+        fs::create_directories(fs::path(reportDir) / "crops");
+        render::writePng((fs::path(reportDir) / regionCropFile(scene.name, region.name, column)).string(),
+                         regionImage(image, region, scale));
+    }
 }
 
 } // namespace
@@ -116,6 +128,9 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                 continue;
             }
             writeCrop(opt.reportDir, ms.name, "reference", ref.image, m.crop);
+            writeRegionCrops(opt.reportDir, ms, "reference", ref.image);
+            std::vector<double> regionFloors;
+            for (const Region& region : ms.regions) regionFloors.push_back(regionNoiseFloor(ref.variance, region));
 
             // Untimed warm-up: a tiny render per pattern × spp fills whatever the sampler caches per N, so the
             // timed cells measure steady state. Its cost is reported per scene.
@@ -159,8 +174,17 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     row.nonFiniteSamples = r.nonFiniteSamples;
                     row.renderSeconds = r.renderSeconds;
                     row.samplerSeconds = r.samplerSeconds;
+                    row.cpuSeconds = r.cpuSeconds;
+                    for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
+                        const double mse = regionError(ref.image, r.image, ms.regions[ri]).mse;
+                        row.regionMse.push_back(mse);
+                        row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
+                    }
                     results.rows.push_back(row);
-                    if (g.spp == cropSpp && g.seed == m.seeds.front()) writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
+                    if (g.spp == cropSpp && g.seed == m.seeds.front()) {
+                        writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
+                        writeRegionCrops(opt.reportDir, ms, pattern, r.image);
+                    }
                     progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
                                       pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
                                       row.renderSeconds, row.samplerSeconds, row.floorLimited ? ", floor-limited" : ""));
