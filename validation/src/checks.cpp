@@ -152,7 +152,8 @@ std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector
         case CheckType::Slope: slope(k, matrix, slopes, o); break;
         case CheckType::TimeRatio: evaluateTimeRatio(k, matrix, rows, o); break;
         case CheckType::TimeCeiling: timeCeiling(k, matrix, rows, o); break;
-        case CheckType::EqualTime: evaluateEqualTime(k, matrix, rows, o); break;
+        case CheckType::EqualTime:
+        case CheckType::EqualSpp: evaluateEqualTime(k, matrix, rows, o); break;
         }
         o.failsRun = o.status == CheckStatus::Fail || (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
         out.push_back(o);

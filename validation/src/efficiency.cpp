@@ -50,10 +50,12 @@ double EfficiencyRanking::ratioOf(const std::string& a, const std::string& b, do
 }
 
 EfficiencyRanking rankEfficiency(const std::vector<ResultRow>& rows, const std::string& scene, uint32_t spp,
-                                 const std::vector<std::string>& patterns, double floor, const RowError& mse) {
+                                 const std::vector<std::string>& patterns, double floor, bool equalTime,
+                                 const RowError& mse) {
     EfficiencyRanking out;
     out.scene = scene;
     out.spp = spp;
+    out.equalTime = equalTime;
     for (const auto& pattern : patterns) {
         std::vector<const ResultRow*> mine;
         for (const auto& r : rows)
@@ -73,7 +75,7 @@ EfficiencyRanking rankEfficiency(const std::vector<ResultRow>& rows, const std::
         std::vector<double> logs;
         for (size_t i = 0; i < mine.size(); ++i) {
             const double e = p.measuredMse ? mse(*mine[i]) : corrected[i];
-            if (e > 0) logs.push_back(-std::log(e * cost(*mine[i])));
+            if (e > 0) logs.push_back(-std::log(e * (equalTime ? cost(*mine[i]) : 1.0)));
         }
         if (logs.empty()) continue;
         const SampleSummary s = summarize(logs);

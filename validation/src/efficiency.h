@@ -46,6 +46,7 @@ struct EfficiencyStep {          // ranked[i] against ranked[i + 1]
 struct EfficiencyRanking {
     std::string scene, region;   // region empty: the whole image
     uint32_t spp = 0;
+    bool equalTime = true;       // 1 / (MSE · s); false: 1 / MSE
     std::vector<PatternEfficiency> ranked; // most efficient first
     std::vector<EfficiencyStep> steps;
     double ratioOf(const std::string& a, const std::string& b, double* lo = nullptr, double* hi = nullptr) const;
@@ -54,8 +55,9 @@ struct EfficiencyRanking {
 // Rows of one scene at one spp; `mse` picks the error (whole image or a region) from a row, `floor` is the
 // reference's noise floor for that error.
 using RowError = std::function<double(const ResultRow&)>; // measured MSE of a row (image or region)
+// equalTime false: ranked by 1 / MSE alone (error at equal samples).
 EfficiencyRanking rankEfficiency(const std::vector<ResultRow>& rows, const std::string& scene, uint32_t spp,
-                                 const std::vector<std::string>& patterns, double floor,
+                                 const std::vector<std::string>& patterns, double floor, bool equalTime = true,
                                  const RowError& mse = [](const ResultRow& r) { return r.mse; });
 
 // One-line form: "stratified 1.9× poisson (95% 1.6-2.3) > poisson ≈ independent (1.1×, 0.8-1.5)".

@@ -60,17 +60,24 @@ double floorFromRows(const std::vector<ResultRow>& rows, const std::string& scen
 void evaluateEqualTime(const Check& k, const Matrix& m, const std::vector<ResultRow>& rows, CheckOutcome& o) {
     std::string chain;
     for (const auto& p : k.order) chain += (chain.empty() ? "" : " > ") + p;
-    o.claim = fmt("equal_time %s @ %u spp: efficiency 1/(MSE·CPU s) %s (geometric means over seeds, Welch 95%%)%s",
-                  k.scene.c_str(), k.spp, chain.c_str(), k.study.empty() ? "" : ("; study: " + k.study).c_str());
+    const bool equalTime = k.type == CheckType::EqualTime;
+    o.claim = fmt("%s %s%s @ %u spp: %s %s (geometric means over seeds, Welch 95%%)%s", checkTypeName(k.type),
+                  k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp,
+                  equalTime ? "efficiency 1/(MSE·CPU s)" : "1/MSE at equal samples", chain.c_str(),
+                  k.study.empty() ? "" : ("; study: " + k.study).c_str());
     bool any = false;
     for (const auto& s : m.scenes) {
         if (k.scene != "all" && k.scene != s.name) continue;
         any = true;
-        const EfficiencyRanking r = rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name));
-        worsen(o.status, judge(k, r, fmt("%s @ %u spp", s.name.c_str(), k.spp), o.figures));
+        if (k.region.empty()) {
+            const EfficiencyRanking r =
+                rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name), equalTime);
+            worsen(o.status, judge(k, r, fmt("%s @ %u spp", s.name.c_str(), k.spp), o.figures));
+        }
         for (size_t ri = 0; ri < s.regions.size(); ++ri) {
+            if (!k.region.empty() && k.region != s.regions[ri].name) continue;
             const double regionFloor = floorFromRows(rows, s.name, int(ri));
-            const EfficiencyRanking rr = rankEfficiency(rows, s.name, k.spp, m.patterns, regionFloor,
+            const EfficiencyRanking rr = rankEfficiency(rows, s.name, k.spp, m.patterns, regionFloor, equalTime,
                                                         [ri](const ResultRow& row) {
                                                             return ri < row.regionMse.size() ? row.regionMse[ri] : NAN;
                                                         });

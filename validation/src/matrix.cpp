@@ -24,6 +24,7 @@ const char* checkTypeName(CheckType type) {
     case CheckType::TimeRatio: return "time_ratio";
     case CheckType::TimeCeiling: return "time_ceiling";
     case CheckType::EqualTime: return "equal_time";
+    case CheckType::EqualSpp: return "equal_spp";
     }
     return "?";
 }
@@ -342,11 +343,25 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
                 P.onlyKeys(c, {"type", "scene", "seconds"}, "a time_ceiling check");
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 k.seconds = P.positive(P.required(c, "seconds", "a time_ceiling check"), "seconds");
-            } else if (type == "equal_time") {
-                k.type = CheckType::EqualTime;
-                P.onlyKeys(c, {"type", "scene", "order", "spp", "study", "not_separated"}, "an equal_time check");
-                k.scene = sceneRef(P.required(c, "scene", "an equal_time check"), true);
-                const YAML::Node order = P.required(c, "order", "an equal_time check");
+            } else if (type == "equal_time" || type == "equal_spp") {
+                k.type = type == "equal_time" ? CheckType::EqualTime : CheckType::EqualSpp;
+                const std::string what = "an " + type + " check";
+                P.onlyKeys(c, {"type", "scene", "region", "order", "spp", "study", "not_separated"}, what);
+                k.scene = sceneRef(P.required(c, "scene", what), true);
+                if (c["region"]) {
+                    k.region = P.get<std::string>(c["region"], "region");
+                    const MatrixScene* ms = m.findScene(k.scene);
+                    bool known = false;
+                    std::vector<std::string> names;
+                    for (const auto& r : ms ? ms->regions : std::vector<Region>{}) {
+                        names.push_back(r.name);
+                        known |= r.name == k.region;
+                    }
+                    if (!ms) P.fail(c["region"], "a region needs one scene, not 'all'");
+                    if (!known) P.fail(c["region"], "unknown region '" + k.region + "' of scene " + k.scene +
+                                                        " (its regions: " + joined(names) + ")");
+                }
+                const YAML::Node order = P.required(c, "order", what);
                 if (!order.IsSequence() || order.size() < 2)
                     P.fail(order, "order must list at least two patterns, most efficient first");
                 for (const auto& p : order) k.order.push_back(matrixPattern(p));
@@ -355,7 +370,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
                 k.notSeparatedFails = notSeparated(c, false);
             } else {
                 P.fail(c["type"], "unknown check type '" + type +
-                                      "' (known: ordering, slope, time_ratio, time_ceiling, equal_time)");
+                                      "' (known: ordering, slope, time_ratio, time_ceiling, equal_time, equal_spp)");
             }
             m.checks.push_back(k);
         }

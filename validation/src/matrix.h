@@ -46,7 +46,7 @@ struct CropSettings {
     uint32_t spp = 0;        // 0: the largest spp of the matrix
 };
 
-enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime };
+enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime, EqualSpp };
 
 struct Check {
     CheckType type = CheckType::Ordering;
@@ -65,8 +65,9 @@ struct Check {
     uint32_t spp = 0;        // 0: the largest spp of the matrix
     // time_ceiling
     double seconds = 0;
-    // equal_time (order: best first; spp as time_ratio)
+    // equal_time / equal_spp (order: best first; spp as time_ratio)
     std::string study;       // the study's own conclusion for the scene, printed beside the measured one
+    std::string region;      // empty: the whole image and every region of the scene; else that region only
 };
 
 struct Matrix {

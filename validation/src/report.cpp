@@ -1,5 +1,7 @@
 #include "report.h"
 
+#include "verdicts_report.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -157,6 +159,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
          "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}th{background:#eee}"
          "td:first-child,td:nth-child(2){text-align:left}.PASS{color:#080}.FAIL{color:#c00;font-weight:bold}"
          ".NOT{color:#a60}pre{background:#f6f6f6;padding:1em;overflow:auto}img.crop{image-rendering:pixelated}"
+         ".headline{background:#f4f7fb;border-left:4px solid #456;padding:0.2em 1em}.grid{display:flex;flex-wrap:wrap;"
+         "gap:8px}.grid figure{margin:0}figcaption{text-align:center;font-size:90%}"
          "</style></head><body>\n";
     o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n<p>Renderer " << html(r.rendererVersion) << "; "
       << r.rows.size() << " rows (cell × seed); " << m.seeds.size() << " seeds per cell"
@@ -167,6 +171,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
          "max(MSE − floor, 0)) and flag a seed <em>floor-limited</em> when its corrected MSE ≤ 2 × floor. Intervals "
          "are 95% Student-t over the seeds. Times are render seconds without scene load or BVH build; medians over "
          "seeds.</p>\n";
+
+    o << verdictsHtml(in);
 
     o << "<h2>Checks</h2>\n<table><tr><th>status</th><th>claim</th><th>figures</th><th>where</th></tr>\n";
     for (const auto& c : in.outcomes) {

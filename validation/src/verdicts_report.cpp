@@ -1,0 +1,174 @@
+#include "verdicts_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "efficiency.h"
+#include "efficiency_claims.h"
+#include "regions.h"
+
+namespace stipple::validation {
+
+namespace {
+
+std::string fmt(const char* format, auto... args) {
+    char buf[1024];
+    std::snprintf(buf, sizeof buf, format, args...);
+    return buf;
+}
+
+std::string html(const std::string& s) {
+    std::string o;
+    for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
+    return o;
+}
+
+// The 1-, 5- and 15-minute load averages as the kernel reports them (empty where there is no /proc).
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    double a = 0, b = 0, c = 0;
+    if (!(in >> a >> b >> c)) return "";
+    return fmt("%.2f, %.2f, %.2f", a, b, c);
+}
+
+// Whole image first, then each region of the scene.
+std::vector<EfficiencyRanking> rankingsOf(const ReportInputs& in, const MatrixScene& s, uint32_t spp) {
+    const auto& rows = in.results->rows;
+    const auto& patterns = in.matrix->patterns;
+    std::vector<EfficiencyRanking> out;
+    out.push_back(rankEfficiency(rows, s.name, spp, patterns, floorFromRows(rows, s.name)));
+    for (size_t ri = 0; ri < s.regions.size(); ++ri) {
+        EfficiencyRanking r = rankEfficiency(rows, s.name, spp, patterns, floorFromRows(rows, s.name, int(ri)), true,
+                                             [ri](const ResultRow& row) {
+                                                 return ri < row.regionMse.size() ? row.regionMse[ri] : NAN;
+                                             });
+        r.region = s.regions[ri].name;
+        out.push_back(r);
+    }
+    return out;
+}
+
+// "stratified is the most efficient at equal time, 1.9× poisson (95% 1.6-2.3)" or "... not separated from ...".
+std::string sentence(const EfficiencyRanking& r) {
+    if (r.ranked.empty()) return "no cells";
+    if (r.ranked.size() == 1) return r.ranked[0].pattern + " alone";
+    const auto& st = r.steps[0];
+    std::string s = st.separated
+                        ? fmt("%s is the most efficient at equal time, %.2f× %s (95%% %.2f-%.2f)", r.ranked[0].pattern.c_str(),
+                              st.ratio, r.ranked[1].pattern.c_str(), st.lo, st.hi)
+                        : fmt("%s and %s lead, not separated (%.2f×, 95%% %.2f-%.2f)", r.ranked[0].pattern.c_str(),
+                              r.ranked[1].pattern.c_str(), st.ratio, st.lo, st.hi);
+    double lo = 0, hi = 0;
+    const auto& last = r.ranked.back();
+    const double worst = r.ratioOf(r.ranked[0].pattern, last.pattern, &lo, &hi);
+    if (r.ranked.size() > 2) s += fmt("; %.3g× %s (95%% %.3g-%.3g)", worst, last.pattern.c_str(), lo, hi);
+    return s;
+}
+
+std::string studyOf(const Matrix& m, const std::string& scene) {
+    for (const auto& k : m.checks)
+        if (k.type == CheckType::EqualTime && (k.scene == scene || k.scene == "all") && !k.study.empty()) return k.study;
+    return "";
+}
+
+} // namespace
+
+std::string verdictsHtml(const ReportInputs& in) {
+    const Matrix& m = *in.matrix;
+    const uint32_t spp = m.spp.back();
+    std::ostringstream o;
+    size_t pass = 0, fail = 0, ns = 0;
+    for (const auto& c : in.outcomes)
+        (c.status == CheckStatus::Pass ? pass : c.status == CheckStatus::Fail ? fail : ns)++;
+    o << "<div class=\"headline\"><p><strong>" << in.outcomes.size() << " claims: " << pass << " PASS, " << fail
+      << " FAIL, " << ns << " NOT SEPARATED.</strong> Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
+      << m.patterns.size() << " patterns × " << m.spp.size() << " spp × " << m.seeds.size() << " seeds. Machine: "
+      << std::thread::hardware_concurrency() << " hardware threads; load average (1, 5, 15 min) when the report was "
+      << "written: " << html(loadAverage()) << ".</p>\n<ul>\n";
+    for (const auto& s : m.scenes) {
+        const auto rankings = rankingsOf(in, s, spp);
+        o << "<li><strong>" << html(s.name) << "</strong> (" << spp << " spp): " << html(sentence(rankings[0])) << ".";
+        const std::string study = studyOf(m, s.name);
+        if (!study.empty()) o << " <em>Study: " << html(study) << ".</em>";
+        for (size_t i = 1; i < rankings.size(); ++i)
+            o << " Region " << html(rankings[i].region) << ": " << html(sentence(rankings[i])) << ".";
+        o << "</li>\n";
+    }
+    o << "</ul></div>\n";
+
+    o << "<h2>Equal-time efficiency at " << spp << " spp</h2>\n<p>Efficiency 1/(MSE<sub>corrected</sub> · CPU s) per "
+         "seed; geometric mean over seeds relative to the most efficient pattern of the row, with Welch's 95% interval "
+         "on the log ratio. <em>floor</em>: the reference's noise floor as a share of the cell's corrected MSE (above "
+      << fmt("%.0f", 100 * kFloorShareLimit) << "% the cell is flagged ⚑). <em>heavy</em>: the worst seed's RMS ≥ "
+      << fmt("%.0f", kHeavyTailFactor) << "× the median seed's; its trimmed mean RMS (lowest and highest seed dropped) "
+         "is shown.</p>\n<table><tr><th>scene</th><th>region</th>";
+    for (const auto& p : m.patterns) o << "<th>" << html(p) << "</th>";
+    o << "</tr>\n";
+    for (const auto& s : m.scenes)
+        for (const auto& r : rankingsOf(in, s, spp)) {
+            o << "<tr><td>" << html(s.name) << "</td><td>" << html(r.region.empty() ? "whole image" : r.region) << "</td>";
+            for (const auto& p : m.patterns) {
+                const PatternEfficiency* e = nullptr;
+                for (const auto& x : r.ranked)
+                    if (x.pattern == p) e = &x;
+                if (!e) {
+                    o << "<td>–</td>";
+                    continue;
+                }
+                double lo = 1, hi = 1;
+                const double ratio = e == &r.ranked[0] ? 1.0 : r.ratioOf(p, r.ranked[0].pattern, &lo, &hi);
+                o << "<td>" << (e == &r.ranked[0] ? "<strong>best</strong>" : fmt("%.3g (%.3g–%.3g)", ratio, lo, hi))
+                  << fmt("<br><small>floor %.1f%%%s</small>", 100 * e->floorShare, e->floorShare > kFloorShareLimit ? " ⚑" : "")
+                  << (e->rms.heavyTailed ? fmt("<br><small>heavy ×%.1f, trimmed RMS %.3g</small>", e->rms.maxOverMedian,
+                                               e->rms.trimmedMean)
+                                         : "")
+                  << "</td>";
+            }
+            o << "</tr>\n";
+        }
+    o << "</table>\n";
+
+    bool anyRegion = false;
+    for (const auto& s : m.scenes) anyRegion |= !s.regions.empty();
+    if (anyRegion) {
+        const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
+        o << "<h2>Regions at " << cropSpp << " spp (seed " << m.seeds.front() << ")</h2>\n<p>Each region magnified "
+             "(nearest neighbour) to at least 128 px on its short side, the reference first.</p>\n";
+        for (const auto& s : m.scenes)
+            for (const auto& rg : s.regions) {
+                o << "<h3>" << html(s.name) << ": " << html(rg.name) << fmt(" (x %.2f–%.2f, y %.2f–%.2f)", rg.x0, rg.x1, rg.y0, rg.y1)
+                  << "</h3>\n<div class=\"grid\">";
+                std::vector<std::string> columns = {"reference"};
+                columns.insert(columns.end(), m.patterns.begin(), m.patterns.end());
+                for (const auto& c : columns)
+                    o << "<figure><img class=\"crop\" src=\"" << regionCropFile(s.name, rg.name, c) << "\" alt=\""
+                      << html(s.name + " " + rg.name + ", " + c) << "\"><figcaption>" << html(c) << "</figcaption></figure>";
+                o << "</div>\n";
+            }
+    }
+    return o.str();
+}
+
+std::string verdictsText(const ReportInputs& in) {
+    const Matrix& m = *in.matrix;
+    const uint32_t spp = m.spp.back();
+    std::string s = fmt("equal-time efficiency at %u spp (1/(MSE·CPU s), relative to the best of the row, 95%%):\n", spp);
+    for (const auto& scene : m.scenes)
+        for (const auto& r : rankingsOf(in, scene, spp)) {
+            s += fmt("  %-13s %-16s", scene.name.c_str(), r.region.empty() ? "whole image" : r.region.c_str());
+            for (const auto& e : r.ranked) {
+                double lo = 1, hi = 1;
+                const double ratio = &e == &r.ranked[0] ? 1.0 : r.ratioOf(e.pattern, r.ranked[0].pattern, &lo, &hi);
+                s += fmt("  %s %.3g (%.3g-%.3g)%s%s", e.pattern.c_str(), ratio, lo, hi,
+                         e.floorShare > kFloorShareLimit ? fmt(" [floor %.0f%%]", 100 * e.floorShare).c_str() : "",
+                         e.rms.heavyTailed ? " [heavy]" : "");
+            }
+            s += "\n";
+        }
+    return s;
+}
+
+} // namespace stipple::validation
