@@ -61,26 +61,31 @@ void evaluateEqualTime(const Check& k, const Matrix& m, const std::vector<Result
     std::string chain;
     for (const auto& p : k.order) chain += (chain.empty() ? "" : " > ") + p;
     const bool equalTime = k.type == CheckType::EqualTime;
+    const char* measure = k.flipMetric ? (equalTime ? "1/(mean FLIP·CPU s)" : "1/mean FLIP at equal samples")
+                                       : (equalTime ? "efficiency 1/(MSE·CPU s)" : "1/MSE at equal samples");
     o.claim = fmt("%s %s%s @ %u spp: %s %s (geometric means over seeds, Welch 95%%)%s", checkTypeName(k.type),
-                  k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp,
-                  equalTime ? "efficiency 1/(MSE·CPU s)" : "1/MSE at equal samples", chain.c_str(),
-                  k.study.empty() ? "" : ("; study: " + k.study).c_str());
+                  k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp, measure,
+                  chain.c_str(), k.study.empty() ? "" : ("; study: " + k.study).c_str());
     bool any = false;
     for (const auto& s : m.scenes) {
         if (k.scene != "all" && k.scene != s.name) continue;
         any = true;
+        // FLIP has no reference-noise correction: its floor is 0 here.
         if (k.region.empty()) {
             const EfficiencyRanking r =
-                rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name), equalTime);
+                k.flipMetric ? rankEfficiency(rows, s.name, k.spp, m.patterns, 0, equalTime,
+                                              [](const ResultRow& row) { return row.flip; })
+                             : rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name), equalTime);
             worsen(o.status, judge(k, r, fmt("%s @ %u spp", s.name.c_str(), k.spp), o.figures));
         }
         for (size_t ri = 0; ri < s.regions.size(); ++ri) {
             if (!k.region.empty() && k.region != s.regions[ri].name) continue;
-            const double regionFloor = floorFromRows(rows, s.name, int(ri));
-            const EfficiencyRanking rr = rankEfficiency(rows, s.name, k.spp, m.patterns, regionFloor, equalTime,
-                                                        [ri](const ResultRow& row) {
-                                                            return ri < row.regionMse.size() ? row.regionMse[ri] : NAN;
-                                                        });
+            const EfficiencyRanking rr =
+                k.flipMetric
+                    ? rankEfficiency(rows, s.name, k.spp, m.patterns, 0, equalTime,
+                                     [ri](const ResultRow& row) { return ri < row.regionFlip.size() ? row.regionFlip[ri] : NAN; })
+                    : rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name, int(ri)), equalTime,
+                                     [ri](const ResultRow& row) { return ri < row.regionMse.size() ? row.regionMse[ri] : NAN; });
             worsen(o.status, judge(k, rr, fmt("%s region %s", s.name.c_str(), s.regions[ri].name.c_str()), o.figures));
         }
     }

@@ -346,7 +346,12 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
             } else if (type == "equal_time" || type == "equal_spp") {
                 k.type = type == "equal_time" ? CheckType::EqualTime : CheckType::EqualSpp;
                 const std::string what = "an " + type + " check";
-                P.onlyKeys(c, {"type", "scene", "region", "order", "spp", "study", "not_separated"}, what);
+                P.onlyKeys(c, {"type", "scene", "region", "order", "spp", "study", "not_separated", "metric"}, what);
+                if (c["metric"]) {
+                    auto v = P.get<std::string>(c["metric"], "metric");
+                    if (v != "mse" && v != "flip") P.fail(c["metric"], "metric must be mse or flip, got '" + v + "'");
+                    k.flipMetric = v == "flip";
+                }
                 k.scene = sceneRef(P.required(c, "scene", what), true);
                 if (c["region"]) {
                     k.region = P.get<std::string>(c["region"], "region");

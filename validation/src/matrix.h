@@ -68,6 +68,7 @@ struct Check {
     // equal_time / equal_spp (order: best first; spp as time_ratio)
     std::string study;       // the study's own conclusion for the scene, printed beside the measured one
     std::string region;      // empty: the whole image and every region of the scene; else that region only
+    bool flipMetric = false; // metric: flip (mean LDR-FLIP) instead of mse
 };
 
 struct Matrix {

@@ -228,7 +228,9 @@ void writeResultsJson(const std::string& path, const Results& results, const std
           << ", \"render_seconds\": " << jsonNumber(r.renderSeconds)
           << ", \"sampler_seconds\": " << jsonNumber(r.samplerSeconds)
           << ", \"cpu_seconds\": " << jsonNumber(r.cpuSeconds) << ", \"region_mse\": " << jsonArray(r.regionMse)
-          << ", \"region_mse_corrected\": " << jsonArray(r.regionMseCorrected) << "}";
+          << ", \"region_mse_corrected\": " << jsonArray(r.regionMseCorrected) << ", \"flip\": " << jsonNumber(r.flip)
+          << ", \"spectrum_ratio\": " << jsonNumber(r.spectrumRatio) << ", \"region_flip\": " << jsonArray(r.regionFlip)
+          << ", \"region_spectrum_ratio\": " << jsonArray(r.regionSpectrumRatio) << "}";
     }
     o << "\n  ],\n  \"cells\": [";
     for (size_t i = 0; i < cells.size(); ++i) {
@@ -321,6 +323,10 @@ Results readResultsJson(const std::string& path) {
             row.cpuSeconds = n["cpu_seconds"] ? number(n["cpu_seconds"]) : 0;  // absent in older files
             for (const auto& v : n["region_mse"]) row.regionMse.push_back(number(v));
             for (const auto& v : n["region_mse_corrected"]) row.regionMseCorrected.push_back(number(v));
+            row.flip = number(n["flip"]);
+            row.spectrumRatio = number(n["spectrum_ratio"]);
+            for (const auto& v : n["region_flip"]) row.regionFlip.push_back(number(v));
+            for (const auto& v : n["region_spectrum_ratio"]) row.regionSpectrumRatio.push_back(number(v));
             r.rows.push_back(row);
         }
     } catch (const YAML::Exception& e) {

@@ -3,6 +3,7 @@
 // --merge and --baseline.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ struct ResultRow {
     double renderSeconds = 0, samplerSeconds = 0;
     double cpuSeconds = 0;                     // thread CPU seconds of the render loop, summed over its workers
     std::vector<double> regionMse, regionMseCorrected; // per region of the scene (matrix order), as mse above
+    double flip = NAN;                         // mean LDR-FLIP (67 pixels per degree) against the reference
+    double spectrumRatio = NAN;                // error power high / low frequency: 1 white, > 1 blue
+    std::vector<double> regionFlip, regionSpectrumRatio; // per region, as above
 };
 
 struct SceneInfo {

@@ -13,6 +13,8 @@
 #include "progress.h"
 #include "reference_cache.h"
 #include "regions.h"
+#include "error_spectrum.h"
+#include "flip.h"
 #include "report.h"
 
 namespace stipple::validation {
@@ -175,7 +177,19 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     row.renderSeconds = r.renderSeconds;
                     row.samplerSeconds = r.samplerSeconds;
                     row.cpuSeconds = r.cpuSeconds;
+                    // Perceptual error and the error's spectrum, after the timed render. FLIP is computed on the
+                    // whole image (its filters see a region's surroundings) and averaged per region.
+                    const FlipMaps flip = ldrFlipLinear(ref.image, r.image);
+                    row.flip = flip.mean();
+                    row.spectrumRatio = errorSpectrum(ref.image, r.image).highOverLow;
                     for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
+                        const PixelRect px = pixelRect(ms.regions[ri], r.image.width, r.image.height);
+                        double sum = 0;
+                        for (int y = px.y; y < px.y + px.h; ++y)
+                            for (int x = px.x; x < px.x + px.w; ++x) sum += flip.flip[size_t(y) * flip.width + x];
+                        row.regionFlip.push_back(sum / double(px.w * px.h));
+                        row.regionSpectrumRatio.push_back(
+                            errorSpectrum(regionImage(ref.image, ms.regions[ri]), regionImage(r.image, ms.regions[ri])).highOverLow);
                         const double mse = regionError(ref.image, r.image, ms.regions[ri]).mse;
                         row.regionMse.push_back(mse);
                         row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));

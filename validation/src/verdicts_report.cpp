@@ -9,6 +9,7 @@
 #include "efficiency.h"
 #include "efficiency_claims.h"
 #include "regions.h"
+#include "statistics.h"
 
 namespace stipple::validation {
 
@@ -66,6 +67,29 @@ std::string sentence(const EfficiencyRanking& r) {
     const double worst = r.ratioOf(r.ranked[0].pattern, last.pattern, &lo, &hi);
     if (r.ranked.size() > 2) s += fmt("; %.3g× %s (95%% %.3g-%.3g)", worst, last.pattern.c_str(), lo, hi);
     return s;
+}
+
+// Mean FLIP ± 95% and the geometric mean of the error spectrum's high/low ratio over the seeds of a cell;
+// region < 0: the whole image.
+struct Perceptual {
+    Interval flip;
+    double spectrum = NAN;
+};
+Perceptual perceptualOf(const std::vector<ResultRow>& rows, const std::string& scene, const std::string& pattern,
+                        uint32_t spp, int region) {
+    std::vector<double> flip, logSpectrum;
+    for (const auto& r : rows) {
+        if (r.scene != scene || r.pattern != pattern || r.spp != spp) continue;
+        const size_t i = size_t(region);
+        const double f = region < 0 ? r.flip : i < r.regionFlip.size() ? r.regionFlip[i] : NAN;
+        const double q = region < 0 ? r.spectrumRatio : i < r.regionSpectrumRatio.size() ? r.regionSpectrumRatio[i] : NAN;
+        if (std::isfinite(f)) flip.push_back(f);
+        if (std::isfinite(q) && q > 0) logSpectrum.push_back(std::log(q));
+    }
+    Perceptual p;
+    p.flip = meanInterval(flip);
+    if (!logSpectrum.empty()) p.spectrum = std::exp(mean(logSpectrum));
+    return p;
 }
 
 std::string studyOf(const Matrix& m, const std::string& scene) {
@@ -131,6 +155,24 @@ std::string verdictsHtml(const ReportInputs& in) {
         }
     o << "</table>\n";
 
+    o << "<h2>Perceptual error at " << spp << " spp</h2>\n<p>Mean LDR-FLIP (Andersson et al. 2020; renders and reference "
+         "at exposure 0, clamped, sRGB; 67 pixels per degree) ± 95% over seeds, lower is better; and the error's "
+         "spectrum: mean power at 0.25–0.5 cycles per pixel over mean power below 0.125 (1 white noise, above 1 blue, "
+         "below 1 blotchy), geometric mean over seeds.</p>\n<table><tr><th>scene</th><th>region</th>";
+    for (const auto& p : m.patterns) o << "<th>" << html(p) << "</th>";
+    o << "</tr>\n";
+    for (const auto& s : m.scenes)
+        for (int ri = -1; ri < int(s.regions.size()); ++ri) {
+            o << "<tr><td>" << html(s.name) << "</td><td>" << html(ri < 0 ? "whole image" : s.regions[size_t(ri)].name) << "</td>";
+            for (const auto& p : m.patterns) {
+                const Perceptual q = perceptualOf(in.results->rows, s.name, p, spp, ri);
+                o << "<td>" << fmt("FLIP %.4f ± %.2g<br><small>spectrum %.2f</small>", q.flip.mean, q.flip.halfWidth, q.spectrum)
+                  << "</td>";
+            }
+            o << "</tr>\n";
+        }
+    o << "</table>\n";
+
     bool anyRegion = false;
     for (const auto& s : m.scenes) anyRegion |= !s.regions.empty();
     if (anyRegion) {
@@ -165,6 +207,16 @@ std::string verdictsText(const ReportInputs& in) {
                 s += fmt("  %s %.3g (%.3g-%.3g)%s%s", e.pattern.c_str(), ratio, lo, hi,
                          e.floorShare > kFloorShareLimit ? fmt(" [floor %.0f%%]", 100 * e.floorShare).c_str() : "",
                          e.rms.heavyTailed ? " [heavy]" : "");
+            }
+            s += "\n";
+        }
+    s += fmt("perceptual error at %u spp (mean LDR-FLIP ± 95%%; error spectrum high/low: 1 white, > 1 blue):\n", spp);
+    for (const auto& scene : m.scenes)
+        for (int ri = -1; ri < int(scene.regions.size()); ++ri) {
+            s += fmt("  %-13s %-16s", scene.name.c_str(), ri < 0 ? "whole image" : scene.regions[size_t(ri)].name.c_str());
+            for (const auto& p : m.patterns) {
+                const Perceptual q = perceptualOf(in.results->rows, scene.name, p, spp, ri);
+                s += fmt("  %s %.4f ± %.2g [%.2f]", p.c_str(), q.flip.mean, q.flip.halfWidth, q.spectrum);
             }
             s += "\n";
         }
