@@ -30,9 +30,8 @@ RobustRms robustRms(const std::vector<double>& perSeed) {
     double sum = 0;
     for (size_t i = trim; i < v.size() - trim; ++i) sum += v[i];
     r.trimmedMean = sum / double(v.size() - 2 * trim);
-    const double med = median(v);
-    r.maxOverMedian = med > 0 ? v.back() / med : 0;
-    r.heavyTailed = r.maxOverMedian >= kHeavyTailFactor;
+    r.maxOverMin = v.front() > 0 ? v.back() / v.front() : INFINITY;
+    r.heavyTailed = v.size() >= 2 && r.maxOverMin >= kHeavyTailFactor;
     return r;
 }
 

@@ -131,6 +131,8 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             }
             writeCrop(opt.reportDir, ms.name, "reference", ref.image, m.crop);
             writeRegionCrops(opt.reportDir, ms, "reference", ref.image);
+            render::writePng((fs::path(opt.reportDir) / "crops" / (safeName(ms.name) + "-reference-full.png")).string(),
+                             ref.image);
             std::vector<double> regionFloors;
             for (const Region& region : ms.regions) regionFloors.push_back(regionNoiseFloor(ref.variance, region));
 

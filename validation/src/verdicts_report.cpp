@@ -100,21 +100,38 @@ std::string studyOf(const Matrix& m, const std::string& scene) {
 
 } // namespace
 
-std::string verdictsHtml(const ReportInputs& in) {
+std::string patternColor(const std::string& pattern) {
+    // Okabe–Ito: distinguishable with the common colour-vision deficiencies; the plots use the same.
+    static const std::pair<const char*, const char*> colors[] = {
+        {"independent", "#E69F00"}, {"stratified", "#0072B2"}, {"poisson", "#009E73"},
+        {"poisson-seed", "#CC79A7"}, {"sobol", "#D55E00"},      {"pmj02", "#56B4E9"}};
+    for (const auto& [name, color] : colors)
+        if (pattern == name) return color;
+    return "#000000";
+}
+
+std::string patternHeader(const std::string& pattern) {
+    return "<span class=\"sw\" style=\"background:" + patternColor(pattern) + "\"></span>" + html(pattern);
+}
+
+std::string verdictHeadlineHtml(const ReportInputs& in) {
     const Matrix& m = *in.matrix;
     const uint32_t spp = m.spp.back();
     std::ostringstream o;
     size_t pass = 0, fail = 0, ns = 0;
     for (const auto& c : in.outcomes)
         (c.status == CheckStatus::Pass ? pass : c.status == CheckStatus::Fail ? fail : ns)++;
-    o << "<div class=\"headline\"><p><strong>" << in.outcomes.size() << " claims: " << pass << " PASS, " << fail
-      << " FAIL, " << ns << " NOT SEPARATED.</strong> Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
+    o << "<div class=\"headline\"><p class=\"counts\"><strong><span id=\"claims-total\">" << in.outcomes.size()
+      << "</span> claims: <span class=\"PASS\" id=\"claims-pass\">" << pass << "</span> PASS, <span class=\"FAIL\" "
+      << "id=\"claims-fail\">" << fail << "</span> FAIL, <span class=\"NOT\" id=\"claims-not-separated\">" << ns
+      << "</span> NOT SEPARATED.</strong></p>\n<p>Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
       << m.patterns.size() << " patterns × " << m.spp.size() << " spp × " << m.seeds.size() << " seeds. Machine: "
       << std::thread::hardware_concurrency() << " hardware threads; load average (1, 5, 15 min) when the report was "
-      << "written: " << html(loadAverage()) << ".</p>\n<ul>\n";
+      << "written: " << html(loadAverage()) << ".</p>\n<p>At equal render time (CPU seconds), " << spp << " spp:</p><ul>\n";
     for (const auto& s : m.scenes) {
         const auto rankings = rankingsOf(in, s, spp);
-        o << "<li><strong>" << html(s.name) << "</strong> (" << spp << " spp): " << html(sentence(rankings[0])) << ".";
+        o << "<li><a href=\"#scene-" << safeName(s.name) << "\"><strong>" << html(s.name) << "</strong></a>: "
+          << html(sentence(rankings[0])) << ".";
         const std::string study = studyOf(m, s.name);
         if (!study.empty()) o << " <em>Study: " << html(study) << ".</em>";
         for (size_t i = 1; i < rankings.size(); ++i)
@@ -122,74 +139,64 @@ std::string verdictsHtml(const ReportInputs& in) {
         o << "</li>\n";
     }
     o << "</ul></div>\n";
+    return o.str();
+}
 
-    o << "<h2>Equal-time efficiency at " << spp << " spp</h2>\n<p>Efficiency 1/(MSE<sub>corrected</sub> · CPU s) per "
-         "seed; geometric mean over seeds relative to the most efficient pattern of the row, with Welch's 95% interval "
-         "on the log ratio. <em>floor</em>: the reference's noise floor as a share of the cell's corrected MSE (above "
-      << fmt("%.0f", 100 * kFloorShareLimit) << "% the cell is flagged ⚑). <em>heavy</em>: the worst seed's RMS ≥ "
-      << fmt("%.0f", kHeavyTailFactor) << "× the median seed's; its trimmed mean RMS (lowest and highest seed dropped) "
-         "is shown.</p>\n<table><tr><th>scene</th><th>region</th>";
-    for (const auto& p : m.patterns) o << "<th>" << html(p) << "</th>";
+std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
+    const Matrix& m = *in.matrix;
+    const uint32_t spp = m.spp.back();
+    std::ostringstream o;
+    o << "<h3>Equal-time efficiency and perceptual error at " << spp << " spp</h3>\n<p class=\"note\">Efficiency "
+         "1/(MSE<sub>corrected</sub> · CPU s) per seed, geometric mean over seeds relative to the row's most efficient "
+         "pattern, Welch's 95% interval. <em>floor</em>: reference noise floor / the cell's corrected MSE (⚑ above "
+      << fmt("%.0f", 100 * kFloorShareLimit) << "%). <em>heavy</em>: worst seed's RMS ≥ " << fmt("%.0f", kHeavyTailFactor)
+      << "× its best seed's, with the trimmed mean RMS (lowest and highest seed dropped). FLIP: mean LDR-FLIP ± 95% (67 pixels per degree); spectrum: "
+         "error power at 0.25–0.5 over below 0.125 cycles per pixel (1 white, above 1 blue).</p>\n"
+         "<table><tr><th>region</th><th>measure</th>";
+    for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
-    for (const auto& s : m.scenes)
-        for (const auto& r : rankingsOf(in, s, spp)) {
-            o << "<tr><td>" << html(s.name) << "</td><td>" << html(r.region.empty() ? "whole image" : r.region) << "</td>";
-            for (const auto& p : m.patterns) {
-                const PatternEfficiency* e = nullptr;
-                for (const auto& x : r.ranked)
-                    if (x.pattern == p) e = &x;
-                if (!e) {
-                    o << "<td>–</td>";
-                    continue;
-                }
-                double lo = 1, hi = 1;
-                const double ratio = e == &r.ranked[0] ? 1.0 : r.ratioOf(p, r.ranked[0].pattern, &lo, &hi);
-                o << "<td>" << (e == &r.ranked[0] ? "<strong>best</strong>" : fmt("%.3g (%.3g–%.3g)", ratio, lo, hi))
-                  << fmt("<br><small>floor %.1f%%%s</small>", 100 * e->floorShare, e->floorShare > kFloorShareLimit ? " ⚑" : "")
-                  << (e->rms.heavyTailed ? fmt("<br><small>heavy ×%.1f, trimmed RMS %.3g</small>", e->rms.maxOverMedian,
-                                               e->rms.trimmedMean)
-                                         : "")
-                  << "</td>";
+    const auto rankings = rankingsOf(in, s, spp);
+    for (size_t ri = 0; ri < rankings.size(); ++ri) {
+        const auto& r = rankings[ri];
+        const std::string region = r.region.empty() ? "whole image" : r.region;
+        o << "<tr><td rowspan=\"2\">" << html(region) << "</td><td>efficiency</td>";
+        for (const auto& p : m.patterns) {
+            const PatternEfficiency* e = nullptr;
+            for (const auto& x : r.ranked)
+                if (x.pattern == p) e = &x;
+            if (!e) {
+                o << "<td>–</td>";
+                continue;
             }
-            o << "</tr>\n";
+            double lo = 1, hi = 1;
+            const double ratio = e == &r.ranked[0] ? 1.0 : r.ratioOf(p, r.ranked[0].pattern, &lo, &hi);
+            o << "<td>" << (e == &r.ranked[0] ? "<strong>best</strong>" : fmt("%.3g<br><small>(%.3g–%.3g)</small>", ratio, lo, hi))
+              << fmt("<br><small>floor %.1f%%%s</small>", 100 * e->floorShare, e->floorShare > kFloorShareLimit ? " ⚑" : "")
+              << (e->rms.heavyTailed ? fmt("<br><small>heavy ×%.1f, trimmed RMS %.3g</small>", e->rms.maxOverMin,
+                                           e->rms.trimmedMean)
+                                     : "")
+              << "</td>";
         }
+        o << "</tr>\n<tr><td>FLIP, spectrum</td>";
+        for (const auto& p : m.patterns) {
+            const Perceptual q = perceptualOf(in.results->rows, s.name, p, spp, int(ri) - 1);
+            o << "<td>" << fmt("%.4f<br><small>± %.2g; %.2f</small>", q.flip.mean, q.flip.halfWidth, q.spectrum) << "</td>";
+        }
+        o << "</tr>\n";
+    }
     o << "</table>\n";
 
-    o << "<h2>Perceptual error at " << spp << " spp</h2>\n<p>Mean LDR-FLIP (Andersson et al. 2020; renders and reference "
-         "at exposure 0, clamped, sRGB; 67 pixels per degree) ± 95% over seeds, lower is better; and the error's "
-         "spectrum: mean power at 0.25–0.5 cycles per pixel over mean power below 0.125 (1 white noise, above 1 blue, "
-         "below 1 blotchy), geometric mean over seeds.</p>\n<table><tr><th>scene</th><th>region</th>";
-    for (const auto& p : m.patterns) o << "<th>" << html(p) << "</th>";
-    o << "</tr>\n";
-    for (const auto& s : m.scenes)
-        for (int ri = -1; ri < int(s.regions.size()); ++ri) {
-            o << "<tr><td>" << html(s.name) << "</td><td>" << html(ri < 0 ? "whole image" : s.regions[size_t(ri)].name) << "</td>";
-            for (const auto& p : m.patterns) {
-                const Perceptual q = perceptualOf(in.results->rows, s.name, p, spp, ri);
-                o << "<td>" << fmt("FLIP %.4f ± %.2g<br><small>spectrum %.2f</small>", q.flip.mean, q.flip.halfWidth, q.spectrum)
-                  << "</td>";
-            }
-            o << "</tr>\n";
-        }
-    o << "</table>\n";
-
-    bool anyRegion = false;
-    for (const auto& s : m.scenes) anyRegion |= !s.regions.empty();
-    if (anyRegion) {
-        const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
-        o << "<h2>Regions at " << cropSpp << " spp (seed " << m.seeds.front() << ")</h2>\n<p>Each region magnified "
-             "(nearest neighbour) to at least 128 px on its short side, the reference first.</p>\n";
-        for (const auto& s : m.scenes)
-            for (const auto& rg : s.regions) {
-                o << "<h3>" << html(s.name) << ": " << html(rg.name) << fmt(" (x %.2f–%.2f, y %.2f–%.2f)", rg.x0, rg.x1, rg.y0, rg.y1)
-                  << "</h3>\n<div class=\"grid\">";
-                std::vector<std::string> columns = {"reference"};
-                columns.insert(columns.end(), m.patterns.begin(), m.patterns.end());
-                for (const auto& c : columns)
-                    o << "<figure><img class=\"crop\" src=\"" << regionCropFile(s.name, rg.name, c) << "\" alt=\""
-                      << html(s.name + " " + rg.name + ", " + c) << "\"><figcaption>" << html(c) << "</figcaption></figure>";
-                o << "</div>\n";
-            }
+    const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
+    for (const auto& rg : s.regions) {
+        o << "<h3>Region " << html(rg.name) << fmt(" (x %.2f–%.2f, y %.2f–%.2f)", rg.x0, rg.x1, rg.y0, rg.y1) << " at "
+          << cropSpp << " spp, seed " << m.seeds.front() << "</h3>\n<div class=\"grid\">";
+        std::vector<std::string> columns = {"reference"};
+        columns.insert(columns.end(), m.patterns.begin(), m.patterns.end());
+        for (const auto& c : columns)
+            o << "<figure><img class=\"crop\" src=\"" << regionCropFile(s.name, rg.name, c) << "\" alt=\""
+              << html(s.name + " " + rg.name + ", " + c) << "\"><figcaption>" << (c == "reference" ? "reference" : patternHeader(c))
+              << "</figcaption></figure>";
+        o << "</div>\n";
     }
     return o.str();
 }

@@ -10,7 +10,14 @@
 
 namespace stipple::validation {
 
-std::string verdictsHtml(const ReportInputs& in);
+// The headline: claim counts (with ids the browser test reads), the machine, one sentence per scene.
+std::string verdictHeadlineHtml(const ReportInputs& in);
+// A scene's equal-time / perceptual table (whole image and regions) and its region crop grids.
+std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& scene);
+// The colour of a pattern in plots and tables (Okabe–Ito, safe for colour-blind readers).
+std::string patternColor(const std::string& pattern);
+// A table header: colour swatch and name.
+std::string patternHeader(const std::string& pattern);
 // The same verdict table as plain text (stdout at the end of a run).
 std::string verdictsText(const ReportInputs& in);
 
