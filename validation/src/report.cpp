@@ -169,6 +169,7 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
          "margin-right:0.3em;border-radius:2px}.claim{margin:0.5em 0}.claim .st{font-weight:bold;margin-right:0.5em}"
          ".note{font-size:90%;color:#333}section.scene{border-top:2px solid #456;margin-top:1.5em}"
          "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:320px}"
+         "section.scene>.top>div{flex:1 1 420px;min-width:0}"
          "@media print{section.scene{break-before:page}details{display:block}}</style></head><body>\n";
     o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n";
     o << verdictHeadlineHtml(in);
