@@ -14,6 +14,7 @@ packages=(
   gnuplot-nox
   abigail-tools
   python3
+  chromium                # headless: the report's browser test (validation.report_browser)
   clang libclang-rt-14-dev
   slurm-wlm slurmctld slurmd slurm-client munge
   nlohmann-json3-dev

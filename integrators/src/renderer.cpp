@@ -26,6 +26,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -54,6 +55,13 @@ void setFlushToZero() {
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
 #endif
+}
+
+// CPU time of the calling thread: a tile's cost as the cores spent it, whatever else the machine runs.
+double threadCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 std::string hashFiles(const std::vector<std::string>& files) {
@@ -168,10 +176,11 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
     const size_t tileCount = size_t(tilesX) * tilesY;
     std::vector<SplatList> splats(tileCount);
     std::vector<uint64_t> rays(tileCount, 0), nonFinite(tileCount, 0);
-    std::vector<double> samplerSeconds(tileCount, 0.0);
+    std::vector<double> samplerSeconds(tileCount, 0.0), cpuSeconds(tileCount, 0.0);
     ProgressBar progress(options.progress, tileCount);
 
     auto renderTile = [&](size_t t) {
+        const double cpuStart = threadCpuSeconds();
         setFlushToZero();
         int x0 = int(t % size_t(tilesX)) * kTileSize, y0 = int(t / size_t(tilesX)) * kTileSize;
         int x1 = std::min(x0 + kTileSize, r.width), y1 = std::min(y0 + kTileSize, r.height);
@@ -196,6 +205,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
         rays[t] = ctx.rays;
         nonFinite[t] += ctx.splats->nonFinite();
         samplerSeconds[t] = samples.samplerSeconds;
+        cpuSeconds[t] = threadCpuSeconds() - cpuStart;
         progress.tick();
     };
 
@@ -233,6 +243,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
         result.raysTraced += rays[t];
         result.nonFiniteSamples += nonFinite[t];
         sumSampler += samplerSeconds[t];
+        result.cpuSeconds += cpuSeconds[t];
     }
     result.samplerSeconds = sumSampler / double(threads);
     result.layout = layout.describe();

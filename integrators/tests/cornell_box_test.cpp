@@ -1,6 +1,8 @@
 // The Cornell box renders with the path tracer: finite, lit, the expected wall colours, the layout it declares,
 // and an EXR/PNG round trip with metadata.
 #define BOOST_TEST_MODULE cornell_box
+#include <algorithm>
+#include <thread>
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -28,6 +30,11 @@ BOOST_AUTO_TEST_CASE(renders_and_writes) {
     BOOST_TEST(r.renderSeconds > 0.0);
     BOOST_TEST(r.samplerSeconds > 0.0);
     BOOST_TEST(r.samplerSeconds < r.renderSeconds);
+    // The workers' CPU time: positive, and no more than every thread busy for the whole render (+1 ms of clock
+    // granularity per tile).
+    const int threads = int(std::thread::hardware_concurrency());
+    BOOST_TEST(r.cpuSeconds > 0.0);
+    BOOST_TEST(r.cpuSeconds <= r.renderSeconds * std::max(threads, 1) + 0.001 * 9);
     // One light: no light choice is declared; the pinhole declares no lens.
     BOOST_TEST(r.layout.find("0 pixel 2D x1\n1 b0.light.pos 2D x1\n2 b0.bsdf.dir 2D x1\n") == 0u);
     BOOST_TEST(r.layout.find("light.choice") == std::string::npos);

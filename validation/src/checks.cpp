@@ -1,5 +1,8 @@
 #include "checks.h"
 
+#include "efficiency_claims.h"
+#include "timing.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -117,37 +120,6 @@ void slope(const Check& k, const Matrix& m, const std::vector<SlopeFit>& slopes,
     }
 }
 
-void timeRatio(const Check& k, const Matrix& m, const std::vector<ResultRow>& rows,
-               const std::vector<CellAggregate>& cells, CheckOutcome& o) {
-    o.claim = fmt("time_ratio %s @ %u spp: render seconds %s / %s ≤ %.3g (median over seeds of paired ratios)",
-                  k.scene.c_str(), k.spp, k.numerator.c_str(), k.denominator.c_str(), k.maxRatio);
-    for (const auto& scene : scenesOf(k, m)) {
-        // Pair the two patterns' rows of one seed: they ran next to each other (interleaved), so machine noise
-        // that drifts over minutes cancels in the ratio.
-        std::vector<double> ratios;
-        for (const auto& a : rows) {
-            if (a.scene != scene || a.pattern != k.numerator || a.spp != k.spp) continue;
-            for (const auto& b : rows)
-                if (b.scene == scene && b.pattern == k.denominator && b.spp == k.spp && b.seed == a.seed &&
-                    b.renderSeconds > 0)
-                    ratios.push_back(a.renderSeconds / b.renderSeconds);
-        }
-        const CellAggregate* a = findCell(cells, scene, k.numerator, k.spp);
-        const CellAggregate* b = findCell(cells, scene, k.denominator, k.spp);
-        if (ratios.empty() || !a || !b) {
-            o.status = CheckStatus::Fail;
-            o.figures.push_back(fmt("%s: cells missing", scene.c_str()));
-            continue;
-        }
-        double r = median(ratios);
-        bool ok = r <= k.maxRatio;
-        if (!ok) o.status = CheckStatus::Fail;
-        o.figures.push_back(fmt("%s: %s %.4fs / %s %.4fs (medians) ; paired ratio median %.3f over %zu seeds%s",
-                                scene.c_str(), k.numerator.c_str(), a->medianRenderSeconds, k.denominator.c_str(),
-                                b->medianRenderSeconds, r, ratios.size(), ok ? "" : "   <-- FAIL"));
-    }
-}
-
 void timeCeiling(const Check& k, const Matrix& m, const std::vector<ResultRow>& rows, CheckOutcome& o) {
     o.claim = fmt("time_ceiling %s: render seconds of every cell × seed ≤ %.3g", k.scene.c_str(), k.seconds);
     for (const auto& scene : scenesOf(k, m)) {
@@ -178,8 +150,10 @@ std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector
         switch (k.type) {
         case CheckType::Ordering: ordering(k, matrix, cells, o); break;
         case CheckType::Slope: slope(k, matrix, slopes, o); break;
-        case CheckType::TimeRatio: timeRatio(k, matrix, rows, cells, o); break;
+        case CheckType::TimeRatio: evaluateTimeRatio(k, matrix, rows, o); break;
         case CheckType::TimeCeiling: timeCeiling(k, matrix, rows, o); break;
+        case CheckType::EqualTime:
+        case CheckType::EqualSpp: evaluateEqualTime(k, matrix, rows, o); break;
         }
         o.failsRun = o.status == CheckStatus::Fail || (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
         out.push_back(o);

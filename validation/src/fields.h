@@ -84,6 +84,30 @@ Field<Record> field(std::string name, T Record::*member, const char* format = "%
     return field<Record>(std::move(name), [member](Record& r) -> T& { return r.*member; }, format, required);
 }
 
+// A list of numbers (e.g. one per region): a JSON array (non-finite entries as null, read back as NaN); in the CSV
+// one field of the values joined by ';'.
+template <class Record>
+Field<Record> doublesField(std::string name, std::vector<double> Record::*member) {
+    Field<Record> f;
+    f.name = std::move(name);
+    f.toJson = [member](const Record& r) {
+        Json a = Json::array();
+        for (double v : r.*member) a.push_back(detail::valueToJson(v));
+        return a;
+    };
+    f.fromJson = [member](Record& r, const Json& j) {
+        (r.*member).clear();
+        if (j.is_null()) return; // absent in older files
+        for (const auto& v : j) (r.*member).push_back(detail::valueFromJson<double>(v));
+    };
+    f.toCsv = [member](const Record& r) {
+        std::string s;
+        for (double v : r.*member) s += (s.empty() ? "" : ";") + detail::valueToCsv(v, "%.9g");
+        return s;
+    };
+    return f;
+}
+
 template <class Record>
 Json toJson(const Record& record, const Fields<Record>& fields) {
     Json j = Json::object();

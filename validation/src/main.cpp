@@ -22,6 +22,7 @@
 
 #include <stipple/render/renderer.h>
 #include <stipple/version.h>
+#include "verdicts_report.h"
 
 using namespace stipple::validation;
 namespace fs = std::filesystem;
@@ -169,6 +170,7 @@ int main(int argc, char** argv) {
         for (const auto& s : in.slopes)
             std::printf("  %-16s %-13s %7.3f ± %.3f\n", s.scene.c_str(), s.pattern.c_str(), s.fit.slope,
                         s.fit.slopeHalfWidth);
+        if (!shard) std::cout << "\n" << verdictsText(in);
         bool failed = false;
         if (shard) std::cout << "\nshard " << args.shardIndex << "/" << args.shardCount
                              << ": checks are evaluated when the shards are merged (--merge)\n";

@@ -21,6 +21,8 @@ const char* checkTypeName(CheckType type) {
     case CheckType::Slope: return "slope";
     case CheckType::TimeRatio: return "time_ratio";
     case CheckType::TimeCeiling: return "time_ceiling";
+    case CheckType::EqualTime: return "equal_time";
+    case CheckType::EqualSpp: return "equal_spp";
     }
     return "?";
 }
@@ -122,7 +124,8 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
             ms.file = P.get<std::string>(s, "scene file");
         } else {
             P.expectMap(s, "a scene entry");
-            P.onlyKeys(s, {"file", "name", "width", "height", "integrator", "max_depth", "reference_spp"}, "a scene entry");
+            P.onlyKeys(s, {"file", "name", "width", "height", "integrator", "max_depth", "reference_spp", "regions"},
+                       "a scene entry");
             ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
             if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
             if (s["width"]) ms.width = P.dimension(s["width"], "width");
@@ -134,6 +137,26 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
                     P.fail(s["integrator"], "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
             }
             if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
+            if (const YAML::Node regions = s["regions"]) {
+                if (!regions.IsSequence()) P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
+                for (const auto& rn : regions) {
+                    P.expectMap(rn, "a region");
+                    P.onlyKeys(rn, {"name", "rect"}, "a region");
+                    Region rg;
+                    rg.name = P.get<std::string>(P.required(rn, "name", "a region"), "region name");
+                    const YAML::Node rect = P.required(rn, "rect", "a region");
+                    if (!rect.IsSequence() || rect.size() != 4)
+                        P.fail(rect, "rect must be [x0, y0, x1, y1], fractions of the image's width and height");
+                    double v[4];
+                    for (int i = 0; i < 4; ++i) v[i] = P.get<double>(rect[i], "rect coordinate");
+                    if (!(0 <= v[0] && v[0] < v[2] && v[2] <= 1 && 0 <= v[1] && v[1] < v[3] && v[3] <= 1))
+                        P.fail(rect, "rect must satisfy 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1");
+                    rg.x0 = v[0], rg.y0 = v[1], rg.x1 = v[2], rg.y1 = v[3];
+                    for (const auto& other : ms.regions)
+                        if (other.name == rg.name) P.fail(rn, "region '" + rg.name + "' appears twice");
+                    ms.regions.push_back(rg);
+                }
+            }
             if (s["max_depth"]) {
                 ms.maxDepth = P.get<int>(s["max_depth"], "max_depth");
                 if (ms.maxDepth < 0) P.fail(s["max_depth"], "max_depth must be ≥ 0");
@@ -270,6 +293,12 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
             P.fail(n, std::string(what) + " " + n.Scalar() + " is not among the matrix's spp");
         return v;
     };
+    auto notSeparated = [&](const YAML::Node& c, bool fails) {
+        if (!c["not_separated"]) return fails;
+        auto v = P.get<std::string>(c["not_separated"], "not_separated");
+        if (v != "fail" && v != "pass") P.fail(c["not_separated"], "not_separated must be fail or pass");
+        return v == "fail";
+    };
     if (const YAML::Node checks = croot["checks"]) {
         if (!checks.IsSequence()) P.fail(checks, "checks must be a list");
         for (const auto& c : checks) {
@@ -287,11 +316,7 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
                 if (!order.IsSequence() || order.size() < 2)
                     P.fail(order, "order must list at least two patterns, best first");
                 for (const auto& p : order) k.order.push_back(matrixPattern(p));
-                if (c["not_separated"]) {
-                    auto v = P.get<std::string>(c["not_separated"], "not_separated");
-                    if (v != "fail" && v != "pass") P.fail(c["not_separated"], "not_separated must be fail or pass");
-                    k.notSeparatedFails = v == "fail";
-                }
+                k.notSeparatedFails = notSeparated(c, true);
             } else if (type == "slope") {
                 k.type = CheckType::Slope;
                 P.onlyKeys(c, {"type", "scene", "pattern", "expected", "tolerance"}, "a slope check");
@@ -302,19 +327,53 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
                 if (m.spp.size() < 2) P.fail(c, "a slope check needs at least two spp in the matrix");
             } else if (type == "time_ratio") {
                 k.type = CheckType::TimeRatio;
-                P.onlyKeys(c, {"type", "scene", "numerator", "denominator", "max", "spp"}, "a time_ratio check");
+                P.onlyKeys(c, {"type", "scene", "numerator", "denominator", "max", "spp", "not_separated"},
+                           "a time_ratio check");
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 k.numerator = matrixPattern(P.required(c, "numerator", "a time_ratio check"));
                 k.denominator = matrixPattern(P.required(c, "denominator", "a time_ratio check"));
                 k.maxRatio = P.positive(P.required(c, "max", "a time_ratio check"), "max");
                 k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
+                // An interval straddling the bound says the run could not tell, not that the claim is false.
+                k.notSeparatedFails = notSeparated(c, false);
             } else if (type == "time_ceiling") {
                 k.type = CheckType::TimeCeiling;
                 P.onlyKeys(c, {"type", "scene", "seconds"}, "a time_ceiling check");
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 k.seconds = P.positive(P.required(c, "seconds", "a time_ceiling check"), "seconds");
+            } else if (type == "equal_time" || type == "equal_spp") {
+                k.type = type == "equal_time" ? CheckType::EqualTime : CheckType::EqualSpp;
+                const std::string what = "an " + type + " check";
+                P.onlyKeys(c, {"type", "scene", "region", "order", "spp", "study", "not_separated", "metric"}, what);
+                if (c["metric"]) {
+                    auto v = P.get<std::string>(c["metric"], "metric");
+                    if (v != "mse" && v != "flip") P.fail(c["metric"], "metric must be mse or flip, got '" + v + "'");
+                    k.flipMetric = v == "flip";
+                }
+                k.scene = sceneRef(P.required(c, "scene", what), true);
+                if (c["region"]) {
+                    k.region = P.get<std::string>(c["region"], "region");
+                    const MatrixScene* ms = m.findScene(k.scene);
+                    bool known = false;
+                    std::vector<std::string> names;
+                    for (const auto& r : ms ? ms->regions : std::vector<Region>{}) {
+                        names.push_back(r.name);
+                        known |= r.name == k.region;
+                    }
+                    if (!ms) P.fail(c["region"], "a region needs one scene, not 'all'");
+                    if (!known) P.fail(c["region"], "unknown region '" + k.region + "' of scene " + k.scene +
+                                                        " (its regions: " + joined(names) + ")");
+                }
+                const YAML::Node order = P.required(c, "order", what);
+                if (!order.IsSequence() || order.size() < 2)
+                    P.fail(order, "order must list at least two patterns, most efficient first");
+                for (const auto& p : order) k.order.push_back(matrixPattern(p));
+                k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
+                if (c["study"]) k.study = P.get<std::string>(c["study"], "study");
+                k.notSeparatedFails = notSeparated(c, false);
             } else {
-                P.fail(c["type"], "unknown check type '" + type + "' (known: ordering, slope, time_ratio, time_ceiling)");
+                P.fail(c["type"], "unknown check type '" + type +
+                                      "' (known: ordering, slope, time_ratio, time_ceiling, equal_time, equal_spp)");
             }
             m.checks.push_back(k);
         }

@@ -15,6 +15,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A named rectangle of the image in normalised coordinates ([0, 1], x right, y down), e.g. the soft shadow
+// under a box: error, efficiency and crops are reported for it on its own.
+struct Region {
+    std::string name;
+    double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+};
+
 struct MatrixScene {
     std::string name;        // used by checks and in the report; default: the file's stem
     std::string file;        // as written in the matrix
@@ -23,6 +30,7 @@ struct MatrixScene {
     std::string integrator;  // empty: the scene's
     int maxDepth = -1;       // -1: the scene's
     uint32_t referenceSpp = 0; // 0: the matrix's reference spp (a noisy scene may need more)
+    std::vector<Region> regions;
 };
 
 struct ReferenceSettings {
@@ -38,7 +46,7 @@ struct CropSettings {
     uint32_t spp = 0;        // 0: the largest spp of the matrix
 };
 
-enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling };
+enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime, EqualSpp };
 
 struct Check {
     CheckType type = CheckType::Ordering;
@@ -57,6 +65,10 @@ struct Check {
     uint32_t spp = 0;        // 0: the largest spp of the matrix
     // time_ceiling
     double seconds = 0;
+    // equal_time / equal_spp (order: best first; spp as time_ratio)
+    std::string study;       // the study's own conclusion for the scene, printed beside the measured one
+    std::string region;      // empty: the whole image and every region of the scene; else that region only
+    bool flipMetric = false; // metric: flip (mean LDR-FLIP) instead of mse
 };
 
 struct Matrix {

@@ -1,5 +1,7 @@
 #include "report.h"
 
+#include "verdicts_report.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -96,7 +98,8 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
             for (size_t i = 0; i < m.patterns.size(); ++i) {
                 if (i) cmd += ", \\\n     ";
                 cmd += gq(base + ".dat") + fmt(" index %zu ", i) +
-                       (bySeconds ? "using 5:2 with linespoints" : "using 1:2:3:4 with yerrorlines") + " lw 2 title " +
+                       (bySeconds ? "using 5:2 with linespoints" : "using 1:2:3:4 with yerrorlines") + " lw 2 lc rgb " +
+                       gq(patternColor(m.patterns[i])) + " title " +
                        gq(m.patterns[i]);
             }
             return cmd + "\n";
@@ -110,9 +113,9 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
             common += "set title " + gq(scene.name + (bySeconds ? ": RMS vs render time" : ": RMS vs spp")) +
                       " noenhanced\n";
             script += "reset\n" + common;
-            script += "set terminal pngcairo size 720,520 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
+            script += "set terminal pngcairo size 600,440 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
                       plotCommand(bySeconds);
-            script += "set terminal svg size 720,520 enhanced\nset output " + gq(stem + ".svg") + "\n" +
+            script += "set terminal svg size 600,440 enhanced\nset output " + gq(stem + ".svg") + "\n" +
                       plotCommand(bySeconds) + "unset output\n";
         }
     }
@@ -179,32 +182,30 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
     bool plotsOk = writePlots(dir, in);
 
     std::ostringstream o;
-    o << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>stipple-validate: " << html(m.name)
-      << "</title>\n<style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
-         "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}th{background:#eee}"
-         "td:first-child,td:nth-child(2){text-align:left}.PASS{color:#080}.FAIL{color:#c00;font-weight:bold}"
-         ".NOT{color:#a60}pre{background:#f6f6f6;padding:1em;overflow:auto}img.crop{image-rendering:pixelated}"
-         "</style></head><body>\n";
-    o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n<p>Renderer " << html(r.rendererVersion) << "; "
-      << r.rows.size() << " rows (cell × seed); " << m.seeds.size() << " seeds per cell"
-      << (in.wallSeconds > 0 ? fmt("; run took %.1f s", in.wallSeconds) : std::string()) << ". "
-      << html(in.note) << "</p>\n";
-    o << "<p>RMS is the study's equation 1, sqrt((1/(H·W)) Σ<sub>pixels</sub> Σ<sub>rgb</sub> (I<sub>ref</sub> − I)²), "
-         "over finite pixels; the figures subtract the reference's noise floor from the MSE (MSE<sub>corrected</sub> = "
-         "max(MSE − floor, 0)) and flag a seed <em>floor-limited</em> when its corrected MSE ≤ 2 × floor. Intervals "
-         "are 95% Student-t over the seeds. Times are render seconds without scene load or BVH build; medians over "
-         "seeds.</p>\n";
-
-    o << "<h2>Checks</h2>\n<table><tr><th>status</th><th>claim</th><th>figures</th><th>where</th></tr>\n";
-    for (const auto& c : in.outcomes) {
-        std::string status = checkStatusName(c.status);
-        o << "<tr><td class=\"" << status.substr(0, status.find(' ')) << "\">" << status
-          << (c.status == CheckStatus::NotSeparated ? (c.failsRun ? " (fails)" : " (tolerated)") : "")
-          << "</td><td style=\"text-align:left\">" << html(c.claim) << "</td><td style=\"text-align:left\"><pre>";
-        for (const auto& f : c.figures) o << html(f) << "\n";
-        o << "</pre></td><td>" << html(c.check.where) << "</td></tr>\n";
-    }
-    o << "</table>\n";
+    o << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" "
+         "content=\"width=device-width, initial-scale=1\"><title>stipple-validate: " << html(m.name)
+      << "</title>\n<style>body{font-family:sans-serif;margin:1.5em auto;max-width:1240px;padding:0 1em;line-height:1.35}"
+         "table{border-collapse:collapse;margin:0.6em 0;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;"
+         "text-align:right;vertical-align:top}th{background:#eee}td:first-child{text-align:left}"
+         ".PASS{color:#080}.FAIL{color:#c00;font-weight:bold}.NOT{color:#a60}"
+         "pre{background:#f6f6f6;padding:0.6em;white-space:pre-wrap;overflow-wrap:anywhere;font-size:85%;margin:0.3em 0}"
+         "img{max-width:100%;height:auto}img.crop{image-rendering:pixelated}"
+         ".headline{background:#f4f7fb;border-left:4px solid #456;padding:0.2em 1em}.counts{font-size:130%}"
+         ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0}figcaption{text-align:center;font-size:90%}"
+         ".pair{display:flex;flex-wrap:wrap;gap:1%}.pair img{width:49%}.sw{display:inline-block;width:0.8em;height:0.8em;"
+         "margin-right:0.3em;border-radius:2px}.claim{margin:0.5em 0}.claim .st{font-weight:bold;margin-right:0.5em}"
+         ".note{font-size:90%;color:#333}section.scene{border-top:2px solid #456;margin-top:1.5em}"
+         "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:320px}"
+         "section.scene>.top>div{flex:1 1 420px;min-width:0}"
+         "@media print{section.scene{break-before:page}details{display:block}}</style></head><body>\n";
+    o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n";
+    o << verdictHeadlineHtml(in);
+    o << "<p class=\"note\">Renderer " << html(r.rendererVersion) << "; " << r.rows.size() << " rows (cell × seed); "
+      << m.seeds.size() << " seeds per cell" << (in.wallSeconds > 0 ? fmt("; run took %.1f s", in.wallSeconds) : std::string())
+      << ". " << html(in.note) << " RMS is the study's equation 1, sqrt((1/(H·W)) Σ<sub>pixels</sub> Σ<sub>rgb</sub> "
+         "(I<sub>ref</sub> − I)²), over finite pixels, with the reference's noise floor removed from the MSE "
+         "(<em>floor-limited</em>: corrected MSE ≤ 2 × floor). Intervals are 95%. Times exclude scene load and BVH "
+         "build.</p>\n";
     if (in.baseline) {
         o << "<h2>Baseline " << html(in.baselinePath) << ": " << (in.baseline->failed ? "FAIL" : "PASS") << "</h2>\n<pre>"
           << in.baseline->compared << " cells compared\n";
@@ -212,68 +213,89 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
         o << "</pre>\n";
     }
 
-    o << "<h2>Scenes</h2>\n<table><tr><th>scene</th><th>file</th><th>integrator</th><th>size</th><th>triangles</th>"
-         "<th>load s</th><th>BVH build s</th><th>warm-up s</th><th>reference spp</th><th>reference s</th><th>noise floor (MSE)</th>"
-         "<th>reference key</th></tr>\n";
-    for (const auto& s : r.scenes)
-        o << "<tr><td>" << html(s.name) << "</td><td style=\"text-align:left\">" << html(s.file) << "</td><td>"
-          << html(s.integrator) << "</td><td>" << s.width << "×" << s.height << "</td><td>" << s.triangles << "</td>"
-          << fmt("<td>%.3f</td><td>%.3f</td><td>%.3f</td><td>%u</td><td>%s</td><td>%.4g</td>", s.loadSeconds, s.buildSeconds, s.warmupSeconds,
-                 s.referenceSpp, s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached",
-                 s.noiseFloor)
-          << "<td>" << html(s.referenceKey) << "</td></tr>\n";
-    o << "</table>\n";
+    auto claimHtml = [&](const CheckOutcome& c, const std::string& onlyScene) {
+        std::string status = checkStatusName(c.status);
+        std::ostringstream b;
+        b << "<div class=\"claim\"><span class=\"st " << status.substr(0, status.find(' ')) << "\">" << status
+          << (c.status == CheckStatus::NotSeparated ? (c.failsRun ? " (fails)" : " (tolerated)") : "") << "</span>"
+          << html(c.claim) << " <small>[" << html(c.check.where) << "]</small><pre>";
+        bool keep = false;
+        for (const auto& f : c.figures) {
+            // A figure line starts with its scene's name; indented lines continue the one before.
+            if (f.rfind("    ", 0) != 0) keep = onlyScene.empty() || f.rfind(onlyScene + " ", 0) == 0 || f.rfind(onlyScene + ":", 0) == 0;
+            if (keep) b << html(f) << "\n";
+        }
+        b << "</pre></div>\n";
+        return b.str();
+    };
 
-    o << "<h2>At " << m.spp.back() << " spp</h2>\n" << cellTable(m, in.cells, m.spp.back());
+    if (!plotsOk) o << "<p>gnuplot failed; see plots/gnuplot.log. Data: plots/*.dat.</p>\n";
+    const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
+    for (const auto& scene : m.scenes) {
+        const std::string b = safeName(scene.name);
+        o << "<section class=\"scene\" id=\"scene-" << b << "\"><h2>" << html(scene.name) << "</h2>\n<div class=\"top\">";
+        const std::string picture = "crops/" + b + "-reference-full.png";
+        if (fs::exists(fs::path(dir) / picture))
+            o << "<img src=\"" << picture << "\" alt=\"" << html(scene.name) << ": the reference, tone-mapped\">";
+        o << "<div>";
+        for (const auto& s : r.scenes)
+            if (s.name == scene.name)
+                o << "<p class=\"note\">" << html(s.integrator) << ", " << s.width << "×" << s.height << ", "
+                  << s.triangles << " triangles; reference " << s.referenceSpp << " spp (" << html(m.reference.pattern)
+                  << "), noise floor " << fmt("%.3g", s.noiseFloor) << " (MSE).</p>";
+        for (const auto& c : in.outcomes)
+            if (c.check.scene == scene.name || c.check.scene == "all") o << claimHtml(c, scene.name);
+        o << "</div></div>\n<div class=\"pair\"><img src=\"plots/" << b << "-rms-spp.png\" alt=\"" << html(scene.name)
+          << ": RMS against samples per pixel, one line per pattern, 95% intervals\"><img src=\"plots/" << b
+          << "-rms-seconds.png\" alt=\"" << html(scene.name) << ": RMS against median render seconds\"></div>\n";
+        o << sceneVerdictsHtml(in, scene);
+        o << "<details><summary>Centre crop and all cells of " << html(scene.name) << "</summary>\n<div class=\"grid\">";
+        std::vector<std::string> columns = m.patterns;
+        columns.push_back("reference");
+        for (const auto& p : columns) {
+            const std::string f = cropFile(scene.name, p);
+            if (fs::exists(fs::path(dir) / f))
+                o << "<figure><img class=\"crop\" src=\"" << f << "\" alt=\"" << html(scene.name + " centre crop, " + p)
+                  << "\"><figcaption>" << html(p) << " (" << cropSpp << " spp)</figcaption></figure>";
+        }
+        o << "</div>\n";
+        std::vector<CellAggregate> mine;
+        for (const auto& c : in.cells)
+            if (c.scene == scene.name) mine.push_back(c);
+        o << cellTable(m, mine, 0) << "</details></section>\n";
+    }
 
-    o << "<h2>Slopes of log RMS vs log spp</h2>\n<p>Least squares over per-seed points; 95% interval on the slope "
-         "(t, n − 2 dof). Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) "
-         "in 2D, less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
-    for (const auto& p : m.patterns) o << "<th>" << html(p) << "</th>";
+    o << "<h2>All claims</h2>\n";
+    for (const auto& c : in.outcomes) o << claimHtml(c, "");
+    o << "<h2>Slopes of log RMS vs log spp</h2>\n<p class=\"note\">Least squares over per-seed points; 95% interval "
+         "on the slope. Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) in 2D, "
+         "less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
+    for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
     for (const auto& scene : m.scenes) {
         o << "<tr><td>" << html(scene.name) << "</td>";
         for (const auto& p : m.patterns) {
             std::string cell = "–";
             for (const auto& s : in.slopes)
-                if (s.scene == scene.name && s.pattern == p)
-                    cell = fmt("%.3f ± %.3f", s.fit.slope, s.fit.slopeHalfWidth);
+                if (s.scene == scene.name && s.pattern == p) cell = fmt("%.3f ± %.3f", s.fit.slope, s.fit.slopeHalfWidth);
             o << "<td>" << cell << "</td>";
         }
         o << "</tr>\n";
     }
     o << "</table>\n";
-
-    o << "<h2>Plots</h2>\n";
-    if (!plotsOk) o << "<p>gnuplot failed; see plots/gnuplot.log. Data: plots/*.dat.</p>\n";
-    for (const auto& scene : m.scenes) {
-        std::string b = safeName(scene.name);
-        o << "<p><img src=\"plots/" << b << "-rms-spp.png\" alt=\"" << html(scene.name) << " RMS vs spp\"> <img src=\"plots/"
-          << b << "-rms-seconds.png\" alt=\"" << html(scene.name) << " RMS vs seconds\"><br>SVG: <a href=\"plots/" << b
-          << "-rms-spp.svg\">RMS vs spp</a>, <a href=\"plots/" << b << "-rms-seconds.svg\">RMS vs seconds</a></p>\n";
-    }
-
-    const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
-    o << "<h2>Crops at " << cropSpp << " spp (seed " << m.seeds.front() << ")</h2>\n<p>The same region under each "
-      << "pattern, as the study's Table 1; nearest-neighbour magnified ×" << m.crop.scale << ".</p>\n<table><tr><th>scene</th>";
-    for (const auto& p : m.patterns) o << "<th>" << html(p) << "</th>";
-    o << "<th>reference</th></tr>\n";
-    for (const auto& scene : m.scenes) {
-        o << "<tr><td>" << html(scene.name) << "</td>";
-        std::vector<std::string> columns = m.patterns;
-        columns.push_back("reference");
-        for (const auto& p : columns) {
-            std::string f = cropFile(scene.name, p);
-            if (fs::exists(fs::path(dir) / f)) o << "<td><img class=\"crop\" src=\"" << f << "\"></td>";
-            else o << "<td>–</td>";
-        }
-        o << "</tr>\n";
-    }
-    o << "</table>\n";
-
-    o << "<h2>All cells</h2>\n" << cellTable(m, in.cells, 0);
-    o << "<p>Per seed: <a href=\"results.csv\">results.csv</a>, <a href=\"results.json\">results.json</a>; per cell: <a href=\"cells.csv\">cells.csv</a>.</p>\n";
-    o << "<h2>Matrix " << html(m.path) << "</h2>\n<pre>" << html(m.text) << "</pre>\n</body></html>\n";
+    o << "<details><summary>Scenes: load, BVH build, references</summary><table><tr><th>scene</th><th>file</th>"
+         "<th>size</th><th>load s</th><th>BVH s</th><th>warm-up s</th><th>ref. spp</th><th>ref. s</th>"
+         "<th>floor (MSE)</th><th>reference key</th></tr>\n";
+    for (const auto& s : r.scenes)
+        o << "<tr><td>" << html(s.name) << "</td><td>" << html(s.file) << "</td><td>" << s.width << "×" << s.height << "</td>"
+          << fmt("<td>%.3f</td><td>%.3f</td><td>%.3f</td><td>%u</td><td>%s</td><td>%.3g</td>", s.loadSeconds,
+                 s.buildSeconds, s.warmupSeconds, s.referenceSpp,
+                 s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached", s.noiseFloor)
+          << "<td>" << html(s.referenceKey) << "</td></tr>\n";
+    o << "</table></details>\n";
+    o << "<p>Data: <a href=\"results.csv\">results.csv</a> (per seed), <a href=\"cells.csv\">cells.csv</a> (per cell), "
+         "<a href=\"results.json\">results.json</a>; plots as SVG and gnuplot data in <a href=\"plots/plots.gp\">plots/</a>.</p>\n";
+    o << "<details><summary>Matrix " << html(m.path) << "</summary><pre>" << html(m.text) << "</pre></details>\n</body></html>\n";
     writeTextFile((fs::path(dir) / "index.html").string(), o.str());
     return plotsOk;
 }

@@ -50,7 +50,7 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         c.scene = rows[i].scene;
         c.pattern = rows[i].pattern;
         c.spp = rows[i].spp;
-        std::vector<double> rms, rmsMeasured, mse, mseCorrected, render, sampler;
+        std::vector<double> rms, rmsMeasured, mse, mseCorrected, render, sampler, cpu;
         for (size_t k = i; k < j; ++k) {
             const auto& r = rows[k];
             rms.push_back(r.rmsCorrected);
@@ -59,6 +59,7 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
             mseCorrected.push_back(r.mseCorrected);
             render.push_back(r.renderSeconds);
             sampler.push_back(r.samplerSeconds);
+            cpu.push_back(r.cpuSeconds);
             c.floorLimitedSeeds += r.floorLimited;
             c.nonFinitePixels += r.nonFinitePixels;
         }
@@ -77,6 +78,7 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
         c.meanMseCorrected = mean(mseCorrected);
         c.medianRenderSeconds = median(render);
         c.medianSamplerSeconds = median(sampler);
+        c.medianCpuSeconds = median(cpu);
         double denom = c.meanMseCorrected * c.medianRenderSeconds;
         c.efficiency = denom > 0 ? 1.0 / denom : std::numeric_limits<double>::infinity();
         cells.push_back(c);
@@ -152,8 +154,15 @@ const Fields<ResultRow>& resultRowFields() {
         field("floor_limited", &ResultRow::floorLimited),
         field("non_finite_pixels", &ResultRow::nonFinitePixels),
         field("non_finite_samples", &ResultRow::nonFiniteSamples),
+        field("flip", &ResultRow::flip),
+        field("spectrum_ratio", &ResultRow::spectrumRatio),
+        doublesField("region_mse", &ResultRow::regionMse),
+        doublesField("region_mse_corrected", &ResultRow::regionMseCorrected),
+        doublesField("region_flip", &ResultRow::regionFlip),
+        doublesField("region_spectrum_ratio", &ResultRow::regionSpectrumRatio),
         field("render_seconds", &ResultRow::renderSeconds, "%.6f"),
         field("sampler_seconds", &ResultRow::samplerSeconds, "%.6f"),
+        field("cpu_seconds", &ResultRow::cpuSeconds, "%.6f"),
     };
     return fields;
 }
@@ -200,6 +209,7 @@ const Fields<CellAggregate>& cellFields() {
         field("efficiency", &C::efficiency, "%.6g"),
         field("median_render_seconds", &C::medianRenderSeconds, "%.6f"),
         field("median_sampler_seconds", &C::medianSamplerSeconds, "%.6f"),
+        field("median_cpu_seconds", &C::medianCpuSeconds, "%.6f"),
     };
     return fields;
 }

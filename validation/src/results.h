@@ -3,6 +3,7 @@
 // --merge and --baseline.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,6 +26,11 @@ struct ResultRow {
     uint64_t nonFinitePixels = 0;              // excluded from the error
     uint64_t nonFiniteSamples = 0;             // reported by the renderer's film
     double renderSeconds = 0, samplerSeconds = 0;
+    double cpuSeconds = 0;                     // thread CPU seconds of the render loop, summed over its workers
+    std::vector<double> regionMse, regionMseCorrected; // per region of the scene (matrix order), as mse above
+    double flip = NAN;                         // mean LDR-FLIP (67 pixels per degree) against the reference
+    double spectrumRatio = NAN;                // error power high / low frequency: 1 white, > 1 blue
+    std::vector<double> regionFlip, regionSpectrumRatio; // per region, as above
 };
 
 struct SceneInfo {
@@ -62,7 +68,7 @@ struct CellAggregate {
     SampleSummary logRmsMeasured;    // of log(rms), before the floor correction, over the seeds where it is > 0
     double meanRmsMeasured = 0;      // before the floor correction
     double meanMse = 0, meanMseCorrected = 0;
-    double medianRenderSeconds = 0, medianSamplerSeconds = 0;
+    double medianRenderSeconds = 0, medianSamplerSeconds = 0, medianCpuSeconds = 0;
     double efficiency = 0;           // 1 / (mean corrected MSE · median render seconds)
     int floorLimitedSeeds = 0;
     uint64_t nonFinitePixels = 0;

@@ -12,6 +12,9 @@
 #include "image_metrics.h"
 #include "progress.h"
 #include "reference_cache.h"
+#include "regions.h"
+#include "error_spectrum.h"
+#include "flip.h"
 #include "report.h"
 #include "run_fingerprint.h"
 
@@ -86,7 +89,19 @@ ResultRow measureRow(const std::string& scene, const render::RenderOptions& o, c
     row.nonFiniteSamples = r.nonFiniteSamples;
     row.renderSeconds = r.renderSeconds;
     row.samplerSeconds = r.samplerSeconds;
+    row.cpuSeconds = r.cpuSeconds;
     return row;
+}
+
+// The study's Table 1 at a size a person can judge: each region magnified to ≥ 128 px on its short side.
+void writeRegionCrops(const std::string& reportDir, const MatrixScene& scene, const std::string& column,
+                      const render::Image& image) {
+    for (const Region& region : scene.regions) {
+        const int scale = regionCropScale(pixelRect(region, image.width, image.height));
+        fs::create_directories(fs::path(reportDir) / "crops");
+        render::writePng((fs::path(reportDir) / regionCropFile(scene.name, region.name, column)).string(),
+                         regionImage(image, region, scale));
+    }
 }
 
 } // namespace
@@ -154,6 +169,11 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                 continue;
             }
             writeCrop(opt.reportDir, ms.name, "reference", ref.image, m.crop);
+            writeRegionCrops(opt.reportDir, ms, "reference", ref.image);
+            render::writePng((fs::path(opt.reportDir) / "crops" / (safeName(ms.name) + "-reference-full.png")).string(),
+                             ref.image);
+            std::vector<double> regionFloors;
+            for (const Region& region : ms.regions) regionFloors.push_back(regionNoiseFloor(ref.variance, region));
 
             info.warmupSeconds = warmUp(*scene, base, m);
 
@@ -167,9 +187,29 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     o.spp = g.spp;
                     o.seed = g.seed;
                     render::RenderResult r = scene->render(o);
-                    const ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
+                    ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
+                    // Perceptual error and the error's spectrum, after the timed render. FLIP is computed on the
+                    // whole image (its filters see a region's surroundings) and averaged per region.
+                    const FlipMaps flip = ldrFlipLinear(ref.image, r.image);
+                    row.flip = flip.mean();
+                    row.spectrumRatio = errorSpectrum(ref.image, r.image).highOverLow;
+                    for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
+                        const PixelRect px = pixelRect(ms.regions[ri], r.image.width, r.image.height);
+                        double sum = 0;
+                        for (int y = px.y; y < px.y + px.h; ++y)
+                            for (int x = px.x; x < px.x + px.w; ++x) sum += flip.flip[size_t(y) * flip.width + x];
+                        row.regionFlip.push_back(sum / double(px.w * px.h));
+                        row.regionSpectrumRatio.push_back(
+                            errorSpectrum(regionImage(ref.image, ms.regions[ri]), regionImage(r.image, ms.regions[ri])).highOverLow);
+                        const double mse = regionError(ref.image, r.image, ms.regions[ri]).mse;
+                        row.regionMse.push_back(mse);
+                        row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
+                    }
                     results.rows.push_back(row);
-                    if (g.spp == cropSpp && g.seed == m.seeds.front()) writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
+                    if (g.spp == cropSpp && g.seed == m.seeds.front()) {
+                        writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
+                        writeRegionCrops(opt.reportDir, ms, pattern, r.image);
+                    }
                     progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
                                       pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
                                       row.renderSeconds, row.samplerSeconds, row.floorLimited ? ", floor-limited" : ""));

@@ -60,7 +60,7 @@ std::vector<ResultRow> rowsWith(Rms rms) {
                 r.seed = uint64_t(s + 1);
                 r.rmsCorrected = r.rms = rms(std::string(pattern), spp, s);
                 r.mseCorrected = r.mse = r.rms * r.rms;
-                r.renderSeconds = 1.0;
+                r.renderSeconds = r.cpuSeconds = 1.0;
                 rows.push_back(r);
             }
     return rows;
@@ -75,8 +75,8 @@ std::vector<ResultRow> syntheticRows() {
         return std::pow(double(spp), pattern == "independent" ? -0.5 : -0.75) * (1 + spread[s]);
     });
     for (ResultRow& r : rows) {
-        if (r.pattern == "poisson") r.renderSeconds = 1.02;
-        if (r.pattern == "independent" && r.spp == 64 && r.seed == 4) r.renderSeconds = 2.0;
+        if (r.pattern == "poisson") r.renderSeconds = r.cpuSeconds = 1.02;
+        if (r.pattern == "independent" && r.spp == 64 && r.seed == 4) r.renderSeconds = r.cpuSeconds = 2.0;
     }
     return rows;
 }
@@ -102,7 +102,10 @@ BOOST_AUTO_TEST_CASE(outcomes_of_synthetic_claims) {
     BOOST_CHECK(out[4].status == CheckStatus::Fail);         // stratified's −0.75 is not −0.5 ± 0.05
     BOOST_CHECK(formatOutcome(out[4]).find("slope -0.750") != std::string::npos);
     BOOST_CHECK(out[5].status == CheckStatus::Pass);         // 1.02 ≤ 1.05
-    BOOST_CHECK(out[6].status == CheckStatus::Pass);         // median of paired ratios 1.0 (one outlier of 2.0)
+    // Paired ratios 1, 1, 1, 2: geometric mean 1.19 with a 95% interval that straddles 1.05. The run cannot
+    // tell, which is not a failure of the claim.
+    BOOST_CHECK(out[6].status == CheckStatus::NotSeparated);
+    BOOST_CHECK(!out[6].failsRun);
     BOOST_CHECK(out[7].status == CheckStatus::Fail);         // the 2 s cell breaks the 1.5 s ceiling
     BOOST_CHECK(formatOutcome(out[7]).find("independent @ 64 spp seed 4: 2.0000s") != std::string::npos);
 }

@@ -129,3 +129,34 @@ BOOST_AUTO_TEST_CASE(missing_file_is_named) {
         return std::string(e.what()).find("no/such/matrix.yaml") != std::string::npos;
     });
 }
+
+// Regions, equal_time / equal_spp checks and the time_ratio's not_separated default.
+BOOST_AUTO_TEST_CASE(regions_and_study_claims) {
+    Fixture f;
+    const std::string withRegions =
+        replaced(replaced(good, "    height: 24\n", "    height: 24\n    regions: [{ name: shade, rect: [0.1, 0.5, 0.6, 1.0] }]\n"),
+                 "  - { type: time_ceiling, seconds: 5 }\n",
+                 "  - { type: time_ceiling, seconds: 5 }\n"
+                 "  - { type: equal_time, scene: box, order: [stratified, independent], study: \"stratified first\" }\n"
+                 "  - { type: equal_spp, scene: box, region: shade, metric: flip, order: [poisson, stratified] }\n");
+    std::ofstream(f.path()) << withRegions;
+    Matrix m = loadMatrix(f.path(), test::kVocabulary);
+    BOOST_REQUIRE_EQUAL(m.scenes[0].regions.size(), 1u);
+    BOOST_CHECK_EQUAL(m.scenes[0].regions[0].name, "shade");
+    BOOST_CHECK_CLOSE(m.scenes[0].regions[0].x1, 0.6, 1e-12);
+    BOOST_CHECK(!m.checks[2].notSeparatedFails);  // time_ratio: an undecided interval does not fail the run
+    BOOST_CHECK(m.checks[4].type == CheckType::EqualTime);
+    BOOST_CHECK_EQUAL(m.checks[4].study, "stratified first");
+    BOOST_CHECK_EQUAL(m.checks[4].spp, 16u);
+    BOOST_CHECK(m.checks[5].type == CheckType::EqualSpp);
+    BOOST_CHECK(m.checks[5].flipMetric);
+    BOOST_CHECK_EQUAL(m.checks[5].region, "shade");
+
+    expectError(f, replaced(withRegions, "[0.1, 0.5, 0.6, 1.0]", "[0.7, 0.5, 0.6, 1.0]"),
+                {f.path() + ":6:", "0 ≤ x0 < x1 ≤ 1"});
+    expectError(f, replaced(withRegions, "[0.1, 0.5, 0.6, 1.0]", "[0.1, 0.5]"), {f.path() + ":6:", "rect must be [x0, y0, x1, y1]"});
+    expectError(f, replaced(withRegions, "region: shade", "region: glow"),
+                {f.path() + ":18:", "unknown region 'glow' of scene box", "shade"});
+    expectError(f, replaced(withRegions, "metric: flip", "metric: ssim"), {f.path() + ":18:", "metric must be mse or flip"});
+    expectError(f, replaced(withRegions, "study: \"stratified first\"", "studdy: x"), {f.path() + ":17:", "unknown key 'studdy'"});
+}

@@ -63,6 +63,8 @@ struct RenderResult {
     Image variance;               // per-pixel, per-channel variance of the mean (sample variance / spp)
     double renderSeconds = 0;     // wall seconds of the render loop (no scene load, no BVH build)
     double samplerSeconds = 0;    // seconds spent inside the shim, summed over threads / thread count
+    double cpuSeconds = 0;        // CPU seconds of the render loop, summed over its worker threads: unlike the
+                                  // wall time, it does not grow when other processes take the cores
     uint64_t nonFiniteSamples = 0;
     uint64_t raysTraced = 0;
     std::string layout;           // the dimension layout declared to the shim, one line per dimension

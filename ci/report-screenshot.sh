@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The first screen of a report as a reader sees it (headless Chromium, 1280 × 900), for the README:
+#   bash ci/report-screenshot.sh [REPORT_DIR] [OUT.png]     (defaults: report, validation/report-first-screen.png)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+report=${1:-report} out=${2:-validation/report-first-screen.png}
+[ -f "$report/index.html" ] || { echo "report-screenshot: no $report/index.html (run bash ci/main.sh first)" >&2; exit 2; }
+profile=$(mktemp -d)
+trap 'rm -rf "$profile"' EXIT
+chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run --user-data-dir="$profile" \
+  --window-size=1280,900 --screenshot="$PWD/$out" "file://$PWD/$report/index.html" 2>/dev/null
+echo "report-screenshot: $out"

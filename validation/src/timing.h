@@ -1,0 +1,37 @@
+// Timing claims that survive a busy machine. A render's cost is measured twice: wall seconds (what a user waits)
+// and thread CPU seconds summed over the render's workers (what the cores spent on it; it does not grow when
+// other processes take the cores). The two patterns of a claim render back to back within each (spp, seed)
+// group, so each seed gives one paired ratio; the claim is judged on the geometric mean of the paired ratios
+// with a 95% Student-t interval on the log scale: PASS when the whole interval is ≤ the bound, FAIL when it is
+// all above, NOT SEPARATED when it straddles the bound.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "checks.h"
+#include "results.h"
+
+namespace stipple::validation {
+
+enum class TimeBasis { Cpu, Wall };
+
+struct PairedRatio {
+    double ratio = 0;      // geometric mean of the per-seed ratios numerator / denominator
+    double lo = 0, hi = 0; // its 95% interval (exp of the t interval of the mean log ratio)
+    size_t pairs = 0;
+};
+
+// Pairs the rows of one seed; NaN interval bounds with fewer than two pairs. Rows without a positive time on
+// the chosen basis are left out.
+PairedRatio pairedTimeRatio(const std::vector<ResultRow>& rows, const std::string& scene, const std::string& numerator,
+                            const std::string& denominator, uint32_t spp, TimeBasis basis);
+
+// PASS: hi ≤ bound; FAIL: lo > bound; NOT SEPARATED otherwise (or when the interval is undefined).
+CheckStatus ratioVerdict(const PairedRatio& r, double bound);
+
+// The time_ratio check: verdict on CPU seconds, with the wall-clock ratio and its interval beside it.
+void evaluateTimeRatio(const Check& check, const Matrix& matrix, const std::vector<ResultRow>& rows,
+                       CheckOutcome& outcome);
+
+} // namespace stipple::validation

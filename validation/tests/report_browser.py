@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""Opens a report folder's index.html in headless Chromium at 1280 px and checks what a reader would see:
+no element (with every <details> opened) wider than the viewport, every image loaded, the headline's claim
+counts equal to results.json's, and every link resolving inside the folder (no network, no absolute paths).
+
+usage: report_browser.py CHROMIUM REPORT_DIR WORKDIR
+"""
+import html
+import json
+import os
+import re
+import subprocess
+import sys
+from html.parser import HTMLParser
+from urllib.parse import unquote, urlparse
+
+PROBE = """<script>
+window.addEventListener('load', () => {
+  document.querySelectorAll('details').forEach(d => d.open = true);
+  const vw = document.documentElement.clientWidth, wide = [];
+  for (const el of document.querySelectorAll('body *')) {
+    const r = el.getBoundingClientRect();
+    if (r.width > 0 && (r.right > vw + 0.5 || r.left < -0.5))
+      wide.push(el.tagName + (el.id ? '#' + el.id : '') + ' right=' + Math.round(r.right));
+  }
+  const images = [...document.images].map(i => ({src: i.getAttribute('src'), loaded: i.complete && i.naturalWidth > 0,
+                                                alt: i.getAttribute('alt') || ''}));
+  const text = id => (document.getElementById(id) || {}).textContent;
+  const out = {viewport: vw, scrollWidth: document.documentElement.scrollWidth, wide, images,
+               counts: {total: text('claims-total'), pass: text('claims-pass'), fail: text('claims-fail'),
+                        not_separated: text('claims-not-separated')}};
+  const pre = document.createElement('pre');
+  pre.id = 'browser-probe';
+  pre.textContent = JSON.stringify(out);
+  document.body.appendChild(pre);
+});
+</script>"""
+
+
+class Links(HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.links, self.ids = [], set()
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if 'id' in a:
+            self.ids.add(a['id'])
+        for key in ('href', 'src'):
+            if key in a and a[key] is not None:
+                self.links.append((tag, a[key]))
+
+
+def main():
+    chromium, report, work = sys.argv[1:4]
+    failures = []
+    index = os.path.join(report, 'index.html')
+    page = open(index, encoding='utf-8').read()
+
+    # Links: relative, inside the folder, existing; anchors name an id of the page.
+    parser = Links()
+    parser.feed(page)
+    for tag, link in parser.links:
+        u = urlparse(link)
+        if u.scheme or u.netloc or link.startswith('/'):
+            failures.append(f'{tag} link leaves the folder: {link}')
+        elif link.startswith('#'):
+            if link[1:] not in parser.ids:
+                failures.append(f'anchor {link} names no element')
+        elif not os.path.exists(os.path.join(report, unquote(u.path))):
+            failures.append(f'{tag} link does not resolve: {link}')
+
+    # The browser: a probe script in a copy of the page beside the original, so relative links still resolve.
+    probe_page = os.path.join(report, 'index.browser-probe.html')
+    open(probe_page, 'w', encoding='utf-8').write(page.replace('</body>', PROBE + '</body>'))
+    cmd = [chromium, '--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars', '--no-first-run',
+           '--user-data-dir=' + os.path.join(work, 'chromium-profile'), '--window-size=1280,900',
+           '--virtual-time-budget=10000', '--dump-dom', 'file://' + os.path.abspath(probe_page)]
+    dom = subprocess.run(cmd, capture_output=True, text=True, timeout=120).stdout
+    os.remove(probe_page)
+    m = re.search(r'<pre id="browser-probe">(.*?)</pre>', dom, re.S)
+    if not m:
+        print('FAILED: the probe did not run (no result in the DOM)')
+        return 1
+    probe = json.loads(html.unescape(m.group(1)))
+    print(f"viewport {probe['viewport']} px, document {probe['scrollWidth']} px wide, {len(probe['images'])} images")
+    if probe['viewport'] != 1280:
+        failures.append(f"viewport is {probe['viewport']} px, not 1280")
+    if probe['scrollWidth'] > probe['viewport']:
+        failures.append(f"horizontal overflow: document {probe['scrollWidth']} px in a {probe['viewport']} px viewport")
+    for w in probe['wide']:
+        failures.append('wider than the viewport: ' + w)
+    for i in probe['images']:
+        if not i['loaded']:
+            failures.append(f"image not loaded: {i['src']}")
+        if not i['alt'].strip():
+            failures.append(f"image without alt text: {i['src']}")
+
+    # The headline against results.json.
+    results = json.load(open(os.path.join(report, 'results.json'), encoding='utf-8'))
+    statuses = [c['status'] for c in results['checks']]
+    expected = {'total': len(statuses), 'pass': statuses.count('PASS'), 'fail': statuses.count('FAIL'),
+                'not_separated': statuses.count('NOT SEPARATED')}
+    shown = {k: int(v) if v is not None else None for k, v in probe['counts'].items()}
+    print(f'headline {shown}, results.json {expected}')
+    if shown != expected:
+        failures.append(f'headline counts {shown} differ from results.json {expected}')
+
+    for f in failures:
+        print('FAILED: ' + f)
+    if not failures:
+        print('report in the browser: ok')
+    return 1 if failures else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

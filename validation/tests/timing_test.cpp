@@ -1,0 +1,82 @@
+// Paired time ratios: the interval of the geometric mean, and the three verdicts each reached for its reason.
+#define BOOST_TEST_MODULE validation_timing
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "timing.h"
+
+using namespace stipple::validation;
+
+namespace {
+// Rows of scene "s", 64 spp, seeds 1..K: pattern a and b with the given CPU and wall seconds per seed.
+std::vector<ResultRow> pairs(const std::vector<double>& aCpu, const std::vector<double>& bCpu,
+                             const std::vector<double>& aWall, const std::vector<double>& bWall) {
+    std::vector<ResultRow> rows;
+    for (size_t i = 0; i < aCpu.size(); ++i)
+        for (int side = 0; side < 2; ++side) {
+            ResultRow r;
+            r.scene = "s";
+            r.pattern = side ? "b" : "a";
+            r.spp = 64;
+            r.seed = i + 1;
+            r.cpuSeconds = side ? bCpu[i] : aCpu[i];
+            r.renderSeconds = side ? bWall[i] : aWall[i];
+            rows.push_back(r);
+        }
+    return rows;
+}
+} // namespace
+
+BOOST_AUTO_TEST_CASE(geometric_mean_and_t_interval) {
+    // log ratios ln 1, ln 2: mean ln √2, sd ln2/√2, t(0.975, 1) = 12.706: hi = √2 · exp(12.706 · ln2 / 2).
+    auto rows = pairs({1, 2}, {1, 1}, {1, 1}, {1, 1});
+    PairedRatio r = pairedTimeRatio(rows, "s", "a", "b", 64, TimeBasis::Cpu);
+    BOOST_CHECK_EQUAL(r.pairs, 2u);
+    BOOST_CHECK_CLOSE(r.ratio, std::sqrt(2.0), 1e-9);
+    BOOST_CHECK_CLOSE(r.hi, std::sqrt(2.0) * std::exp(12.7062047361747 * std::log(2.0) / 2), 1e-6);
+    BOOST_CHECK_CLOSE(r.lo * r.hi, 2.0, 1e-9); // symmetric on the log scale
+    PairedRatio w = pairedTimeRatio(rows, "s", "a", "b", 64, TimeBasis::Wall);
+    BOOST_CHECK_CLOSE(w.ratio, 1.0, 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(verdicts) {
+    // Consistent ratios around 1.00: PASS against 1.05.
+    auto ok = pairs({1.00, 1.01, 0.99, 1.00}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1});
+    BOOST_CHECK(ratioVerdict(pairedTimeRatio(ok, "s", "a", "b", 64, TimeBasis::Cpu), 1.05) == CheckStatus::Pass);
+    // Consistent ratios around 10: FAIL.
+    auto slow = pairs({10, 11, 9.5, 10}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1});
+    BOOST_CHECK(ratioVerdict(pairedTimeRatio(slow, "s", "a", "b", 64, TimeBasis::Cpu), 1.05) == CheckStatus::Fail);
+    // One pair at 1.3 among 1.0s: the interval straddles 1.05, NOT SEPARATED.
+    auto noisy = pairs({1.0, 1.3, 1.0, 1.02}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1});
+    PairedRatio n = pairedTimeRatio(noisy, "s", "a", "b", 64, TimeBasis::Cpu);
+    BOOST_CHECK(n.lo < 1.05 && n.hi > 1.05);
+    BOOST_CHECK(ratioVerdict(n, 1.05) == CheckStatus::NotSeparated);
+    // A single pair has no interval: NOT SEPARATED, never PASS or FAIL on one number.
+    auto one = pairs({2}, {1}, {2}, {1});
+    BOOST_CHECK(ratioVerdict(pairedTimeRatio(one, "s", "a", "b", 64, TimeBasis::Cpu), 1.05) == CheckStatus::NotSeparated);
+}
+
+BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {
+    // A busy machine: wall seconds of pattern a inflated by 40-80% on the seeds where a hog ran beside it; the CPU
+    // seconds are unchanged. The claim a / b ≤ 1.05 passes on CPU seconds; the wall ratio is shown beside.
+    auto rows = pairs({1.00, 1.01, 0.99, 1.00}, {1, 1, 1, 1}, {1.4, 1.8, 1.0, 1.5}, {1, 1, 1, 1});
+    Matrix m;
+    m.scenes.push_back({"s", "s.yaml", "s.yaml"});
+    Check k;
+    k.type = CheckType::TimeRatio;
+    k.numerator = "a";
+    k.denominator = "b";
+    k.maxRatio = 1.05;
+    k.spp = 64;
+    CheckOutcome o;
+    evaluateTimeRatio(k, m, rows, o);
+    BOOST_TEST_MESSAGE(formatOutcome(o));
+    BOOST_CHECK(o.status == CheckStatus::Pass);
+    BOOST_CHECK(formatOutcome(o).find("wall ratio 1.") != std::string::npos);
+    // Rows without CPU seconds (older results) cannot be judged: FAIL naming the missing cells.
+    for (auto& r : rows) r.cpuSeconds = 0;
+    CheckOutcome missing;
+    evaluateTimeRatio(k, m, rows, missing);
+    BOOST_CHECK(missing.status == CheckStatus::Fail);
+}
