@@ -61,7 +61,8 @@ python3 - "$work/single/results.json" "$work/array/report/results.json" "$work"/
 import json, math, struct, sys
 single, merged, shards = sys.argv[1], sys.argv[2], sys.argv[3:]
 a, b = json.load(open(single)), json.load(open(merged))
-TIMES = {"render_seconds", "sampler_seconds", "median_render_seconds", "median_sampler_seconds", "efficiency",
+TIMES = {"render_seconds", "sampler_seconds", "cpu_seconds", "median_render_seconds", "median_sampler_seconds",
+         "median_cpu_seconds", "efficiency",
          "load_seconds", "build_seconds", "warmup_seconds", "reference_seconds"}
 
 def bits(x):  # floats compared bit for bit
