@@ -2,6 +2,7 @@
 // sampler, the integrators and the film. Tiles of kTileSize^2 pixels are rendered in parallel with TBB; every
 // pixel's samples depend only on (seed, pixel, sample index, dimension), so the image does not depend on the
 // thread count or tile order.
+#include <stipple/render/input_limits.h>
 #include <stipple/render/renderer.h>
 
 #include "integrators/integrator.h"
@@ -145,6 +146,7 @@ private:
 
 RenderResult SceneImpl::render(const RenderOptions& options) const {
     Resolved r = resolve(options);
+    checkRenderBudget(r.width, r.height, r.spp); // before the film or the sampler allocates
     Camera camera(scene_.description().camera, r.width, r.height);
     auto integrator = makeIntegrator(r.integrator, scene_, camera, r.settings);
     SampleLayout layout = declareLayout(camera, *integrator);

@@ -3,6 +3,9 @@
 //                  [--max-depth D] [--threads T] [--exposure E] [--shim PATH] [--print-layout] [-o out.exr]
 // Exit codes: 0 success, 1 render/output failure, 2 bad arguments or a scene that cannot be loaded.
 #include <stipple/render/renderer.h>
+#include <stipple/render/temp_files.h>
+
+#include "film/output_publish.h"
 
 #include <cerrno>
 #include <cmath>
@@ -64,6 +67,7 @@ std::string fmt(double v, int precision = 3) {
 } // namespace
 
 int main(int argc, char** argv) {
+    installTempCleanupOnSignals();
     RenderOptions options;
     std::string scenePath, output;
     bool printLayout = false;
@@ -125,11 +129,18 @@ int main(int argc, char** argv) {
     }
     (void)patternGiven;
 
+    // Temporaries of earlier runs that were killed (SIGKILL leaves them) go before this run adds its own.
+    sweepStaleTemps(output.empty() ? "." : std::filesystem::path(output).parent_path().empty()
+                                               ? "."
+                                               : std::filesystem::path(output).parent_path().string());
     std::unique_ptr<Scene> scene;
     try {
         scene = Scene::load(scenePath);
     } catch (const SceneError& e) {
         std::cerr << "stipple-render: " << e.what() << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "stipple-render: " << scenePath << ": out of memory while loading the scene\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "stipple-render: " << scenePath << ": " << e.what() << "\n";
@@ -155,7 +166,8 @@ int main(int argc, char** argv) {
                   << "rays " << r.raysTraced << " (" << fmt(r.raysTraced / std::max(1e-9, r.renderSeconds) / 1e6, 2)
                   << " Mrays/s)\n"
                   << "non-finite samples " << r.nonFiniteSamples << "\n";
-        if (output.empty()) output = scene->name() + ".exr";
+        // Never a path from inside the scene file: its name, made safe, in the working folder.
+        if (output.empty()) output = safeOutputStem(scene->name()) + ".exr";
         std::vector<std::pair<std::string, std::string>> meta{
             {"scene", scene->name()},
             {"scene_hash", scene->contentHash()},
@@ -168,14 +180,15 @@ int main(int argc, char** argv) {
             {"non_finite_samples", std::to_string(r.nonFiniteSamples)},
             {"version", rendererVersion()},
         };
-        writeExr(output, r.image, meta);
-        std::string png = std::filesystem::path(output).replace_extension(".png").string();
-        writePng(png, r.image, exposure);
+        std::string png = publishRenderOutputs(output, r.image, meta, exposure);
         std::cout << "wrote " << output << " and " << png << "\n";
         return 0;
     } catch (const std::invalid_argument& e) {
         std::cerr << "stipple-render: " << e.what() << "\n";
         return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "stipple-render: out of memory while rendering " << scenePath << "\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "stipple-render: " << e.what() << "\n";
         return 1;
