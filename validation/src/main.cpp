@@ -9,11 +9,16 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <optional>
 #include <vector>
+
+#include <stipple/render/temp_files.h>
 
 #include "baseline.h"
 #include "checks.h"
 #include "matrix.h"
+#include "preflight.h"
+#include "report_publish.h"
 #include "report.h"
 #include "results.h"
 #include "runner.h"
@@ -151,6 +156,7 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
 } // namespace
 
 int main(int argc, char** argv) {
+    stipple::render::installTempCleanupOnSignals();
     Args args = parseArgs(argc, argv);
     Matrix matrix;
     try {
@@ -158,19 +164,41 @@ int main(int argc, char** argv) {
     } catch (const MatrixError& e) {
         std::cerr << "stipple-validate: " << e.what() << "\n";
         return kExitUsage;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "stipple-validate: " << args.matrix << ": out of memory while loading the matrix\n";
+        return kExitUsage;
     }
     const bool shard = args.shardCount > 1;
     std::string cache = !args.cache.empty() ? args.cache
                         : !matrix.cacheDir.empty()
                             ? matrix.cacheDir
                             : (fs::absolute(args.out).lexically_normal().parent_path() / ".stipple-cache").string();
+    // Fail fast: the baseline, the cache, the report folder and the scene files are checked before any rendering.
+    std::map<std::string, std::string> unloadable;
+    std::optional<ReportStaging> staging;
+    try {
+        PreflightInputs pre;
+        pre.matrix = args.merge.empty() ? &matrix : nullptr;
+        pre.cacheDir = args.merge.empty() ? cache : "";
+        pre.baselinePath = args.baseline;
+        pre.reportDir = args.referencesOnly ? "" : args.out;
+        unloadable = preflight(pre);
+        if (!args.referencesOnly) staging.emplace(args.out);
+    } catch (const std::exception& e) {
+        std::cerr << "stipple-validate: " << e.what() << "\n";
+        return kExitUsage;
+    }
+    for (const auto& [name, error] : unloadable)
+        std::cerr << "stipple-validate: scene " << name << " cannot be loaded and will be skipped: " << error << "\n";
+    const std::string reportDir = staging ? staging->dir() : args.out;
     auto start = std::chrono::steady_clock::now();
     try {
         Results results;
-        if (!args.merge.empty()) results = mergeShards(matrix, args.merge, args.out);
+        if (!args.merge.empty()) results = mergeShards(matrix, args.merge, reportDir);
         else {
             RunOptions o;
-            o.reportDir = args.out;
+            o.unloadable = unloadable;
+            o.reportDir = reportDir;
             o.cacheDir = cache;
             o.threads = args.threads;
             o.shardIndex = args.shardIndex;
@@ -204,7 +232,8 @@ int main(int argc, char** argv) {
             in.baseline = &baseline;
             in.baselinePath = args.baseline;
         }
-        writeReport(args.out, in);
+        writeReport(reportDir, in);
+        staging->publish();
 
         std::cout << "\n" << summaryTable(matrix, in.cells, matrix.spp.back());
         std::cout << "\nslopes of log RMS vs log spp (95% interval):\n";
@@ -235,6 +264,9 @@ int main(int argc, char** argv) {
         for (const auto& k : results.skipped) std::cerr << "stipple-validate: scene skipped: " << k.error << "\n";
         if (!results.skipped.empty()) return kExitError;
         return failed ? kExitChecksFailed : 0;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "stipple-validate: out of memory\n";
+        return kExitError;
     } catch (const std::exception& e) {
         std::cerr << "stipple-validate: " << e.what() << "\n";
         return kExitError;

@@ -1,5 +1,7 @@
 #include "matrix.h"
 
+#include <stipple/render/input_limits.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -325,11 +327,13 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
 }
 
 Matrix loadMatrix(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw MatrixError(path + ": cannot open the matrix file");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parseMatrix(ss.str(), path);
+    std::string text;
+    try {
+        text = render::readFileBounded(path, render::limits::kMaxYamlFileBytes, "matrix file");
+    } catch (const render::InputLimitError& e) {
+        throw MatrixError(e.what());
+    }
+    return parseMatrix(text, path);
 }
 
 } // namespace stipple::validation

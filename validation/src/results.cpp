@@ -1,5 +1,7 @@
 #include "results.h"
 
+#include <stipple/render/input_limits.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -255,7 +257,7 @@ double number(const YAML::Node& n) {
 Results readResultsJson(const std::string& path) {
     YAML::Node root;
     try {
-        root = YAML::LoadFile(path);
+        root = YAML::Load(render::readFileBounded(path, render::limits::kMaxYamlFileBytes, "results file"));
     } catch (const YAML::BadFile&) {
         throw std::runtime_error(path + ": cannot open results file");
     } catch (const YAML::ParserException& e) {

@@ -80,6 +80,10 @@ public:
     virtual RenderResult render(const RenderOptions& options) const = 0;
 };
 
+// Parses a scene file and checks it as Scene::load does, without building anything to render it: the cheap
+// "will this load" of a run's preflight. Throws SceneError like Scene::load.
+void checkSceneFile(const std::string& path);
+
 // Writes a float EXR (scene-linear) with metadata, via a temp file renamed into place.
 void writeExr(const std::string& path, const Image& image,
               const std::vector<std::pair<std::string, std::string>>& metadata);
