@@ -6,6 +6,7 @@
 #include <stipple/render/temp_files.h>
 
 #include "film/output_publish.h"
+#include "render_args.h"
 
 #include <cerrno>
 #include <cmath>
@@ -21,41 +22,6 @@ using namespace stipple::render;
 
 namespace {
 
-const char* kUsage =
-    "usage: stipple-render <scene.yaml> [--pattern independent|stratified|poisson|poisson-seed] [--spp N]\n"
-    "                      [--seed S] [--integrator path|direct|bdpt] [--width W] [--height H] [--max-depth D]\n"
-    "                      [--threads T] [--exposure STOPS] [--shim PATH] [--print-layout] [-o out.exr]\n";
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-long long parseInt(const std::string& opt, const std::string& v, long long lo, long long hi) {
-    errno = 0;
-    char* end = nullptr;
-    long long x = std::strtoll(v.c_str(), &end, 10);
-    if (v.empty() || *end != '\0' || errno != 0 || x < lo || x > hi)
-        throw UsageError("option " + opt + ": expected an integer in [" + std::to_string(lo) + ", " +
-                         std::to_string(hi) + "], got '" + v + "'");
-    return x;
-}
-
-uint64_t parseU64(const std::string& opt, const std::string& v) {
-    errno = 0;
-    char* end = nullptr;
-    if (v.empty() || v[0] == '-') throw UsageError("option " + opt + ": expected an unsigned integer, got '" + v + "'");
-    unsigned long long x = std::strtoull(v.c_str(), &end, 10);
-    if (*end != '\0' || errno != 0) throw UsageError("option " + opt + ": expected an unsigned integer, got '" + v + "'");
-    return x;
-}
-
-float parseFloat(const std::string& opt, const std::string& v) {
-    char* end = nullptr;
-    float x = std::strtof(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !std::isfinite(x)) throw UsageError("option " + opt + ": expected a number, got '" + v + "'");
-    return x;
-}
-
 std::string fmt(double v, int precision = 3) {
     std::ostringstream o;
     o.setf(std::ios::fixed);
@@ -68,66 +34,22 @@ std::string fmt(double v, int precision = 3) {
 
 int main(int argc, char** argv) {
     installTempCleanupOnSignals();
-    RenderOptions options;
-    std::string scenePath, output;
-    bool printLayout = false;
-    float exposure = 0;
-    bool patternGiven = false;
+    RenderArgs args;
     try {
-        for (int i = 1; i < argc; ++i) {
-            std::string a = argv[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= argc) throw UsageError("option " + a + " needs a value");
-                return argv[++i];
-            };
-            if (a == "-h" || a == "--help") {
-                std::cout << kUsage;
-                return 0;
-            } else if (a == "--pattern") {
-                options.pattern = value();
-                patternGiven = true;
-                if (options.pattern != "independent" && options.pattern != "stratified" && options.pattern != "poisson" &&
-                    options.pattern != "poisson-seed")
-                    throw UsageError("option --pattern: expected independent, stratified, poisson or poisson-seed, got '" +
-                                     options.pattern + "'");
-            } else if (a == "--spp") {
-                options.spp = uint32_t(parseInt(a, value(), 1, 1 << 20));
-            } else if (a == "--seed") {
-                options.seed = parseU64(a, value());
-            } else if (a == "--integrator") {
-                options.integrator = value();
-            } else if (a == "--width") {
-                options.width = int(parseInt(a, value(), 1, 1 << 15));
-            } else if (a == "--height") {
-                options.height = int(parseInt(a, value(), 1, 1 << 15));
-            } else if (a == "--max-depth") {
-                options.maxDepth = int(parseInt(a, value(), 0, 1000));
-            } else if (a == "--threads") {
-                options.threads = int(parseInt(a, value(), 1, 4096));
-            } else if (a == "--exposure") {
-                exposure = parseFloat(a, value());
-            } else if (a == "--shim") {
-                options.shim = value();
-            } else if (a == "--print-layout") {
-                printLayout = true;
-            } else if (a == "-o" || a == "--output") {
-                output = value();
-            } else if (!a.empty() && a[0] == '-') {
-                throw UsageError("unknown option '" + a + "'");
-            } else if (scenePath.empty()) {
-                scenePath = a;
-            } else {
-                throw UsageError("unexpected argument '" + a + "' (the scene is already '" + scenePath + "')");
-            }
-        }
-        if (scenePath.empty()) throw UsageError("no scene file given");
-        if (!output.empty() && std::filesystem::path(output).extension() != ".exr")
-            throw UsageError("option -o: expected a path ending in .exr, got '" + output + "'");
+        args = parseRenderArgs(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const UsageError& e) {
-        std::cerr << "stipple-render: " << e.what() << "\n" << kUsage;
+        std::cerr << "stipple-render: " << e.what() << "\n" << kRenderUsage;
         return 2;
     }
-    (void)patternGiven;
+    if (args.help) {
+        std::cout << kRenderUsage;
+        return 0;
+    }
+    RenderOptions& options = args.options;
+    const std::string& scenePath = args.scenePath;
+    std::string output = args.output;
+    const bool printLayout = args.printLayout;
+    const float exposure = args.exposure;
 
     // Temporaries of earlier runs that were killed (SIGKILL leaves them) go before this run adds its own.
     sweepStaleTemps(output.empty() ? "." : std::filesystem::path(output).parent_path().empty()

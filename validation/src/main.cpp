@@ -16,6 +16,7 @@
 
 #include "baseline.h"
 #include "checks.h"
+#include "cli_args.h"
 #include "matrix.h"
 #include "preflight.h"
 #include "report_publish.h"
@@ -29,74 +30,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kExitChecksFailed = 1, kExitUsage = 2, kExitError = 3;
-
-const char* kUsage =
-    "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
-    "                        [--shard i/n] [--references-only] [--merge DIR1 DIR2 ...]\n"
-    "  -o DIR             report folder (default: report)\n"
-    "  --threads T        render threads (default: the matrix's, else all hardware threads)\n"
-    "  --cache DIR        reference cache (default: the matrix's 'cache', else DIR/../.stipple-cache)\n"
-    "  --baseline FILE    compare with a stored results.json: RMS beyond the intervals or time beyond the\n"
-    "                     matrix's baseline.time_factor fails\n"
-    "  --shard i/n        run the i-th of n deterministic subsets of the (scene, spp, seed) groups; checks are\n"
-    "                     left to --merge\n"
-    "  --references-only  make the references (of this shard's scenes) in the cache and stop\n"
-    "  --merge DIR...     combine shard report folders into the report a single run makes\n"
-    "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
-
-struct Args {
-    std::string matrix, out = "report", cache, baseline;
-    int threads = 0, shardIndex = 1, shardCount = 1;
-    bool referencesOnly = false;
-    std::vector<std::string> merge;
-};
-
-[[noreturn]] void usageError(const std::string& what) {
-    std::cerr << "stipple-validate: " << what << "\n" << kUsage;
-    std::exit(kExitUsage);
-}
-
-Args parseArgs(int argc, char** argv) {
-    Args a;
-    auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) usageError(std::string(argv[i]) + " needs a value");
-        return argv[++i];
-    };
-    for (int i = 1; i < argc; ++i) {
-        std::string s = argv[i];
-        if (s == "-h" || s == "--help") {
-            std::cout << kUsage;
-            std::exit(0);
-        } else if (s == "-o" || s == "--output") a.out = value(i);
-        else if (s == "--cache") a.cache = value(i);
-        else if (s == "--baseline") a.baseline = value(i);
-        else if (s == "--threads") {
-            std::string v = value(i);
-            char* end = nullptr;
-            long t = std::strtol(v.c_str(), &end, 10);
-            if (*end || t < 0 || t > 1024) usageError("--threads: expected a count in [0, 1024], got '" + v + "'");
-            a.threads = int(t);
-        } else if (s == "--shard") {
-            std::string v = value(i);
-            int n1 = 0, n2 = 0;
-            char extra;
-            if (std::sscanf(v.c_str(), "%d/%d%c", &n1, &n2, &extra) != 2 || n2 < 1 || n1 < 1 || n1 > n2)
-                usageError("--shard: expected i/n with 1 ≤ i ≤ n, got '" + v + "'");
-            a.shardIndex = n1;
-            a.shardCount = n2;
-        } else if (s == "--references-only") a.referencesOnly = true;
-        else if (s == "--merge") {
-            while (i + 1 < argc && argv[i + 1][0] != '-') a.merge.push_back(argv[++i]);
-            if (a.merge.empty()) usageError("--merge needs at least one report folder");
-        } else if (!s.empty() && s[0] == '-') usageError("unknown option '" + s + "'");
-        else if (a.matrix.empty()) a.matrix = s;
-        else usageError("unexpected argument '" + s + "' (the matrix is '" + a.matrix + "')");
-    }
-    if (a.matrix.empty()) usageError("no matrix file given");
-    if (!a.merge.empty() && (a.shardCount > 1 || a.referencesOnly))
-        usageError("--merge combines finished shards; it cannot be used with --shard or --references-only");
-    return a;
-}
 
 // Combines the results.json of shard folders; every cell × seed of the matrix must be there exactly once.
 Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const std::string& out) {
@@ -157,7 +90,17 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
 
 int main(int argc, char** argv) {
     stipple::render::installTempCleanupOnSignals();
-    Args args = parseArgs(argc, argv);
+    Args args;
+    try {
+        args = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const UsageError& e) {
+        std::cerr << "stipple-validate: " << e.what() << "\n" << kValidateUsage;
+        return kExitUsage;
+    }
+    if (args.help) {
+        std::cout << kValidateUsage;
+        return 0;
+    }
     Matrix matrix;
     try {
         matrix = loadMatrix(args.matrix);
