@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 namespace stipple::validation {
@@ -113,6 +114,9 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
     YAML::Node root;
     try {
         root = YAML::Load(text);
+    } catch (const YAML::DeepRecursion& e) {
+        throw MatrixError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                          ": YAML nested deeper than the parser's limit");
     } catch (const YAML::ParserException& e) {
         throw MatrixError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
                           ": " + e.msg);
@@ -224,6 +228,17 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
         P.fail(croot["reference"] ? croot["reference"] : croot,
                "reference spp (" + std::to_string(m.reference.spp) + ") must be ≥ 4× the largest cell spp (" +
                    std::to_string(m.spp.back()) + ")");
+    // The largest render a scene entry asks for (its reference) must fit the renderer's budget: found now, not
+    // after the other scenes have rendered.
+    for (size_t i = 0; i < m.scenes.size(); ++i) {
+        const MatrixScene& ms = m.scenes[i];
+        if (!ms.width || !ms.height) continue;
+        try {
+            render::checkRenderBudget(ms.width, ms.height, ms.referenceSpp ? ms.referenceSpp : m.reference.spp);
+        } catch (const std::invalid_argument& e) {
+            P.fail(scenes[i], std::string("the reference of this scene: ") + e.what());
+        }
+    }
 
     // crop
     if (const YAML::Node c = croot["crop"]) {

@@ -5,6 +5,7 @@
 #include <stipple/render/input_limits.h>
 #include <stipple/render/renderer.h>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
@@ -172,6 +173,9 @@ YAML::Node Loader::loadYaml(const std::string& path, const YAML::Node* from, con
         YAML::Node root = YAML::Load(text);
         desc_.files.push_back(path);
         return root;
+    } catch (const YAML::DeepRecursion& e) {
+        throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                         ": YAML nested deeper than the parser's limit");
     } catch (const YAML::ParserException& e) {
         throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
                          ": YAML syntax error: " + e.msg);
