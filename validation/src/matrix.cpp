@@ -143,6 +143,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
     // scenes
     const YAML::Node scenes = P.required(croot, "scenes", "the matrix");
     if (!scenes.IsSequence() || scenes.size() == 0) P.fail(scenes, "scenes must be a non-empty list");
+    std::set<std::string> sceneNames; // a linear findScene per entry made a 15 MB matrix take minutes
     for (const auto& s : scenes) {
         MatrixScene ms;
         if (s.IsScalar()) {
@@ -170,7 +171,8 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
             P.fail(s, "unknown scene file '" + ms.file + "' (looked for " + ms.path + ")");
         if (ms.name.empty()) ms.name = fs::path(ms.file).stem().string();
         if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
-        if (m.findScene(ms.name)) P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
+        if (!sceneNames.insert(ms.name).second)
+            P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
         m.scenes.push_back(ms);
     }
 
@@ -270,9 +272,11 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
     auto sceneRef = [&](const YAML::Node& n, bool allowAll) {
         auto s = P.get<std::string>(n, "scene");
         if (allowAll && s == "all") return s;
-        if (!m.findScene(s)) {
+        if (!sceneNames.count(s)) {
             std::vector<std::string> names;
-            for (const auto& ms : m.scenes) names.push_back(ms.name);
+            for (const auto& ms : m.scenes)
+                if (names.size() < 20) names.push_back(ms.name);
+            if (m.scenes.size() > names.size()) names.push_back("...");
             P.fail(n, "unknown scene '" + s + "' (matrix scenes: " + joined(names) + (allowAll ? ", or all" : "") + ")");
         }
         return s;
