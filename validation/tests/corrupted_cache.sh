@@ -58,4 +58,23 @@ grep -q "did not verify" "$work/log" && fail "the concurrently written entry doe
 grep -q "cached" "$work/log" || fail "the concurrently written entry is not used"
 [ "$(rms)" = "$clean" ] || fail "the concurrently written entry gives other RMS"
 echo "ok: two concurrent writers leave one entry that verifies and no temporaries"
+
+# Kill and rerun: SIGTERM during reference renders leaves no temporary in the cache; a SIGKILLed writer's
+# temporaries (planted: SIGKILL cannot be timed to the write reliably) are swept by the next run, whose entry verifies.
+for delay in 0.3 0.7 1.2; do
+  rm -rf "$work/cache3"
+  "$bin" "$matrix" --cache "$work/cache3" --threads 1 --references-only > "$work/k.log" 2>&1 & pid=$!
+  sleep $delay; kill -TERM $pid 2> /dev/null; wait $pid; rc=$?
+  [ -z "$(find "$work/cache3" -name '*.stipple-tmp-*' 2> /dev/null)" ] || fail "SIGTERM after ${delay}s (rc $rc) left temporaries in the cache"
+  echo "ok: SIGTERM after ${delay}s: rc $rc, no temporary in the cache"
+done
+true & dead=$!; wait $dead
+host=$(hostname | tr -- '-/' '__')
+base=$(basename "$img" .exr)
+touch "$work/cache3/.$base.exr.stipple-tmp-$host-$dead-0.exr" "$work/cache3/.$base.json.stipple-tmp-$host-$dead-2.json"
+"$bin" "$matrix" -o "$work/report" --cache "$work/cache3" --threads 2 > "$work/log" 2>&1 || { cat "$work/log"; fail "rerun after kills"; }
+[ -z "$(find "$work/cache3" -name '*.stipple-tmp-*')" ] || fail "the rerun did not sweep a dead writer's temporaries"
+grep -q "did not verify" "$work/log" && fail "an interrupted write left an entry that was used"
+[ "$(rms)" = "$clean" ] || fail "the entry after kills gives other RMS"
+echo "ok: after kills the rerun sweeps the cache and its entry verifies"
 echo PASSED
