@@ -35,7 +35,9 @@ check "cache folder under a file" "cache folder .*file/cache: cannot create" -o 
 mkdir -p "$work/not-a-report" && touch "$work/not-a-report/precious.txt"
 check "-o is not a report folder" "not a report folder" -o "$work/not-a-report" --cache "$work/cache"
 [ -f "$work/not-a-report/precious.txt" ] || fail "the non-report folder was touched"
+mkdir -p "$work/sub/deeper" && cd "$work/sub/deeper" || exit 1  # the cache stays outside these folders
 check "-o is the working folder" "must name a report folder" -o . --cache "$work/cache"
-check "-o is a parent" "must name a report folder" -o "$work/.." --cache "$work/cache"
+check "-o is a parent" "must name a report folder" -o .. --cache "$work/cache"
+cd "$work" || exit 1
 check "cache inside the report" "inside the report folder" -o "$work/report" --cache "$work/report/cache"
 echo PASSED
