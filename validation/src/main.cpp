@@ -110,6 +110,9 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
         std::cerr << "stipple-validate: " << args.matrix << ": out of memory while loading the matrix\n";
         return kExitUsage;
+    } catch (const std::exception& e) {
+        std::cerr << "stipple-validate: " << args.matrix << ": " << e.what() << "\n";
+        return kExitUsage;
     }
     const bool shard = args.shardCount > 1;
     std::string cache = !args.cache.empty() ? args.cache

@@ -167,7 +167,8 @@ Matrix parseMatrix(const std::string& text, const std::string& path) {
             }
         }
         ms.path = resolve(ms.file);
-        if (!fs::is_regular_file(ms.path))
+        std::error_code fileError; // the throwing overload aborted the run on a name too long for the system
+        if (!fs::is_regular_file(ms.path, fileError))
             P.fail(s, "unknown scene file '" + ms.file + "' (looked for " + ms.path + ")");
         if (ms.name.empty()) ms.name = fs::path(ms.file).stem().string();
         if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
