@@ -32,8 +32,11 @@ done
 
 rm -rf "$work/fresh-cache"
 "$bin" "$big" -o "$work/report" --cache "$work/fresh-cache" --threads 2 > "$work/log" 2>&1 & pid=$!
-for _ in $(seq 500); do [ "$(temps)" -gt 0 ] && break; sleep 0.01; done
-sleep 0.3; kill -KILL $pid; wait $pid 2> /dev/null
+# Killed as soon as its temporary folder exists (the references still have to render then).
+for _ in $(seq 1000); do [ "$(temps)" -gt 0 ] && break; sleep 0.005; done
+kill -KILL $pid 2> /dev/null || fail "the run finished before SIGKILL"
+wait $pid 2> /dev/null
+[ "$(temps)" -gt 0 ] || fail "SIGKILL left no temporary folder (nothing for the sweep to do)"
 [ "$(snapshot)" = "$before" ] || fail "SIGKILL changed the previous report"
 "$bin" "$small" -o "$work/report" --cache "$work/cache" --threads 2 > "$work/log" 2>&1 || { cat "$work/log"; fail "rerun"; }
 [ "$(temps)" -eq 0 ] || fail "the rerun did not sweep the killed run's temporary folder: $(ls -a "$work")"
