@@ -8,6 +8,7 @@
 #   STIPPLE_FUZZ_DIR      build directory (default: the fuzz preset's build/fuzz)
 #   STIPPLE_FUZZ_SECONDS  seconds per harness (default 20; a longer local run: 600 or more)
 #   STIPPLE_JOBS          parallel build jobs (default 2)
+#   STIPPLE_FUZZ_ONLY     space-separated harness names to run (default: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -20,15 +21,19 @@ args=(--preset fuzz)
 [[ -n "${STIPPLE_FUZZ_DIR:-}" ]] && args+=(-B "$dir")
 # The scenes part (city generator) has nothing to fuzz here.
 cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
-cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer
+cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer render_args_fuzzer \
+    validate_args_fuzzer provenance_fuzzer
 
-# harness name, part folder
-harnesses=("stipple_api_fuzzer shim" "scene_fuzzer integrators" "matrix_fuzzer validation")
+# harness name, part folder, seed corpus folder (in <part>/fuzz/)
+harnesses=("stipple_api_fuzzer shim corpus" "scene_fuzzer integrators corpus" "matrix_fuzzer validation corpus"
+           "render_args_fuzzer integrators args-corpus" "validate_args_fuzzer validation args-corpus"
+           "provenance_fuzzer validation provenance-corpus")
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 status=0
 for entry in "${harnesses[@]}"; do
-    read -r name part <<<"$entry"
+    read -r name part seeds <<<"$entry"
+    [[ -n "${STIPPLE_FUZZ_ONLY:-}" && " $STIPPLE_FUZZ_ONLY " != *" $name "* ]] && continue
     out="$dir/fuzz-out/$name"
     rm -rf "$out"
     mkdir -p "$out/corpus"  # new inputs go here, never into the repository
@@ -36,7 +41,7 @@ for entry in "${harnesses[@]}"; do
     echo "fuzz.sh: $name for ${seconds}s"
     if "$dir/bin/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
         -print_final_stats=1 -artifact_prefix="$out/" \
-        "$out/corpus" "$root/$part/fuzz/corpus" "$root/$part/fuzz/regressions" >"$log" 2>&1; then
+        "$out/corpus" "$root/$part/fuzz/$seeds" "$root/$part/fuzz/regressions" >"$log" 2>&1; then
         execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
         echo "fuzz.sh: $name ok: ${execs:-?} executions, $(ls "$out/corpus" | wc -l) new corpus inputs"
     else

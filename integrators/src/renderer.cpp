@@ -2,6 +2,7 @@
 // sampler, the integrators and the film. Tiles of kTileSize^2 pixels are rendered in parallel with TBB; every
 // pixel's samples depend only on (seed, pixel, sample index, dimension), so the image does not depend on the
 // thread count or tile order.
+#include <stipple/render/input_limits.h>
 #include <stipple/render/renderer.h>
 #include <stipple/render/content_hash.h>
 #include <stipple/render/progress_bar.h>
@@ -165,6 +166,7 @@ private:
 
 RenderResult SceneImpl::render(const RenderOptions& options) const {
     Resolved r = resolveSettings(options);
+    checkRenderBudget(r.width, r.height, r.spp); // before the film or the sampler allocates
     Camera camera(scene_.description().camera, r.width, r.height);
     auto integrator = makeIntegrator(r.integrator, scene_, camera, r.settings);
     SampleLayout layout = declareLayout(camera, *integrator);
@@ -252,6 +254,10 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
 }
 
 } // namespace
+
+void checkSceneFile(const std::string& path) {
+    loadSceneDescription(path);
+}
 
 std::unique_ptr<Scene> Scene::load(const std::string& path) {
     auto start = std::chrono::steady_clock::now();

@@ -1,6 +1,6 @@
 #include "mesh.h"
 
-#include <stipple/render/temporary_path.h>
+#include <stipple/render/temp_files.h>
 
 #include <cmath>
 #include <cstdio>
@@ -113,7 +113,8 @@ void Mesh::writePly(const std::string& path) const {
         out.push_back(char(3));
         for (int k = 0; k < 3; ++k) putU32(out, indices_[i + k]);
     }
-    const std::string tmp = stipple::render::temporaryPathFor(path); // two build trees may regenerate at once
+    stipple::render::TempPath temp(path); // two build trees may regenerate at once
+    const std::string& tmp = temp.path();
     {
         std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
         if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
@@ -122,6 +123,7 @@ void Mesh::writePly(const std::string& path) const {
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0)
         throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "'");
+    temp.release();
 }
 
 } // namespace stipple::citygen

@@ -1,6 +1,6 @@
 #include "town.h"
 
-#include <stipple/render/temporary_path.h>
+#include <stipple/render/temp_files.h>
 
 #include "building.h"
 #include "details.h"
@@ -100,7 +100,8 @@ public:
             << objects_.str() << "shapes:\n"
             << shapes_.str();
         std::string path = (std::filesystem::path(outDir_) / (name_ + ".yaml")).string();
-        const std::string tmp = stipple::render::temporaryPathFor(path); // two build trees may regenerate at once
+        stipple::render::TempPath temp(path); // two build trees may regenerate at once
+        const std::string& tmp = temp.path();
         {
             std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
             if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
@@ -109,6 +110,7 @@ public:
             if (!f) throw std::runtime_error("write failed: '" + tmp + "'");
         }
         std::filesystem::rename(tmp, path);
+        temp.release();
     }
 
     TownStats stats;

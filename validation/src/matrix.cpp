@@ -1,5 +1,7 @@
 #include "matrix.h"
 
+#include <stipple/render/input_limits.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -118,6 +120,7 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
     auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
     const YAML::Node scenes = P.required(croot, "scenes", "the matrix");
     if (!scenes.IsSequence() || scenes.size() == 0) P.fail(scenes, "scenes must be a non-empty list");
+    std::set<std::string> sceneNames; // a linear findScene per entry made a 15 MB matrix take minutes
     for (const auto& s : scenes) {
         MatrixScene ms;
         if (s.IsScalar()) {
@@ -163,11 +166,13 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
             }
         }
         ms.path = resolve(ms.file);
-        if (!fs::is_regular_file(ms.path))
+        std::error_code fileError; // the throwing overload aborted the run on a name too long for the system
+        if (!fs::is_regular_file(ms.path, fileError))
             P.fail(s, "unknown scene file '" + ms.file + "' (looked for " + ms.path + ")");
         if (ms.name.empty()) ms.name = fs::path(ms.file).stem().string();
         if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
-        if (m.findScene(ms.name)) P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
+        if (!sceneNames.insert(ms.name).second)
+            P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
         m.scenes.push_back(ms);
     }
 
@@ -236,6 +241,17 @@ void parseReference(const Parser& P, const YAML::Node& croot, Matrix& m) {
         P.fail(croot["reference"] ? croot["reference"] : croot,
                "reference spp (" + std::to_string(m.reference.spp) + ") must be ≥ 4× the largest cell spp (" +
                    std::to_string(m.spp.back()) + ")");
+    // The largest render a scene entry asks for (its reference) must fit the renderer's budget: found now, not
+    // after the other scenes have rendered.
+    for (size_t i = 0; i < m.scenes.size(); ++i) {
+        const MatrixScene& ms = m.scenes[i];
+        if (!ms.width || !ms.height) continue;
+        try {
+            render::checkRenderBudget(ms.width, ms.height, ms.referenceSpp ? ms.referenceSpp : m.reference.spp);
+        } catch (const std::invalid_argument& e) {
+            P.fail(scenes[i], std::string("the reference of this scene: ") + e.what());
+        }
+    }
 
 }
 
@@ -271,12 +287,16 @@ void parseBaseline(const Parser& P, const YAML::Node& croot, Matrix& m) {
 }
 
 void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
+    std::set<std::string> sceneNames; // a linear findScene per check made a matrix of many checks take minutes
+    for (const auto& ms : m.scenes) sceneNames.insert(ms.name);
     auto sceneRef = [&](const YAML::Node& n, bool allowAll) {
         auto s = P.get<std::string>(n, "scene");
         if (allowAll && s == "all") return s;
-        if (!m.findScene(s)) {
+        if (!sceneNames.count(s)) {
             std::vector<std::string> names;
-            for (const auto& ms : m.scenes) names.push_back(ms.name);
+            for (const auto& ms : m.scenes)
+                if (names.size() < 20) names.push_back(ms.name);
+            if (m.scenes.size() > names.size()) names.push_back("...");
             P.fail(n, "unknown scene '" + s + "' (matrix scenes: " + joined(names) + (allowAll ? ", or all" : "") + ")");
         }
         return s;
@@ -421,11 +441,13 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
 }
 
 Matrix loadMatrix(const std::string& path, const MatrixVocabulary& vocabulary) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw MatrixError(path + ": cannot open the matrix file");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parseMatrix(ss.str(), path, vocabulary);
+    std::string text;
+    try {
+        text = render::readFileBounded(path, render::limits::kMaxYamlFileBytes, "matrix file");
+    } catch (const render::InputLimitError& e) {
+        throw MatrixError(e.what());
+    }
+    return parseMatrix(text, path, vocabulary);
 }
 
 } // namespace stipple::validation

@@ -6,12 +6,21 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <stipple/render/temp_files.h>
+
+#include <stipple/render/input_limits.h>
 
 #include "file_lock.h"
 #include "image_metrics.h"
+#include "reference_integrity.h"
 #include "report.h"
 #include "fields.h"
 #include "results.h"
+
+#include <stipple/render/content_hash.h>
 
 namespace stipple::validation {
 
@@ -19,9 +28,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// What the cache's .json beside each reference records: how it was made.
-struct Provenance {
-    std::string key, scene, sceneFile, contentHash, rendererVersion, renderer;
+// What the cache's .json beside each reference records: how it was made, and (key material, checksums) what
+// reference_integrity.h verifies before the entry is used.
+struct ProvenanceRecord {
+    std::string key, keyMaterial, imageChecksum, varianceChecksum, scene, sceneFile, contentHash, rendererVersion, renderer;
     int width = 0, height = 0;
     std::string pattern;
     uint32_t spp = 0;
@@ -35,10 +45,13 @@ struct Provenance {
     std::string layout, created;
 };
 
-const Fields<Provenance>& provenanceFields() {
-    using P = Provenance;
+const Fields<ProvenanceRecord>& provenanceFields() {
+    using P = ProvenanceRecord;
     static const Fields<P> fields = {
         field("key", &P::key),
+        field("key_material", &P::keyMaterial),
+        field("image_checksum", &P::imageChecksum),
+        field("variance_checksum", &P::varianceChecksum),
         field("scene", &P::scene),
         field("scene_file", &P::sceneFile),
         field("content_hash", &P::contentHash),
@@ -60,33 +73,80 @@ const Fields<Provenance>& provenanceFields() {
     };
     return fields;
 }
+// Every part is written to a temporary beside it, then renamed: the EXRs first, the provenance (which vouches for
+// them by checksum) last. A reader between the renames sees a mismatch and re-renders; a killed writer leaves only
+// temporaries, which the next run sweeps. Concurrent writers each rename complete parts of identical content.
+void publishReferenceEntry(const std::vector<std::pair<std::string, const render::Image*>>& images,
+                           const std::vector<std::pair<std::string, std::string>>& meta,
+                           const std::string& provenancePath, const std::string& json) {
+    std::vector<std::unique_ptr<render::TempPath>> temps;
+    for (const auto& [path, image] : images) {
+        temps.push_back(std::make_unique<render::TempPath>(path));
+        render::writeExr(temps.back()->path(), *image, meta);
+    }
+    temps.push_back(std::make_unique<render::TempPath>(provenancePath));
+    {
+        std::ofstream out(temps.back()->path(), std::ios::binary);
+        out << json;
+        out.close();
+        if (!out) throw std::runtime_error("cannot write " + temps.back()->path());
+    }
+    render::SignalHold hold;
+    for (size_t i = 0; i < temps.size(); ++i) {
+        const std::string& target = i < images.size() ? images[i].first : provenancePath;
+        std::error_code ec;
+        fs::rename(temps[i]->path(), target, ec);
+        if (ec) throw std::runtime_error("cannot rename '" + temps[i]->path() + "' to '" + target + "': " + ec.message());
+        temps[i]->release();
+    }
+}
 
 } // namespace
 
 std::string referenceKey(const render::Scene& scene, const render::RenderOptions& o) {
-    std::string material = scene.contentHash() + "|" + render::rendererIdentity() + "|" + render::shimIdentity(o.shim) +
+    return keyOf(referenceKeyMaterial(scene, o));
+}
+
+std::string keyOf(const std::string& material) {
+    return render::ContentHash().add(material).hex();
+}
+
+std::string referenceKeyMaterial(const render::Scene& scene, const render::RenderOptions& o) {
+    return scene.contentHash() + "|" + render::rendererIdentity() + "|" + render::shimIdentity(o.shim) +
                            "|" + std::to_string(o.width) +
                            "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
                            std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " +
                            std::to_string(o.maxDepth) + "|halves";
-    return render::ContentHash().add(material).hex();
 }
 
 Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
                                 const render::RenderOptions& options, const std::string& cacheDir) {
     Reference ref;
-    ref.key = referenceKey(scene, options);
+    const std::string keyMaterial = referenceKeyMaterial(scene, options);
+    ref.key = keyOf(keyMaterial);
     const std::string stem = (fs::path(cacheDir) / (safeName(scene.name()) + "-" + ref.key)).string();
     ref.imagePath = stem + ".exr";
     const std::string variancePath = stem + ".variance.exr", provenancePath = stem + ".json";
 
+    // Use the entry only when everything verifies; otherwise say why and render it again.
     auto readCached = [&] {
-        if (!fs::exists(provenancePath) || !fs::exists(ref.imagePath) || !fs::exists(variancePath)) return false;
-        ref.image = render::readImage(ref.imagePath);
-        ref.variance = render::readImage(variancePath);
-        // A size that does not match its key means a damaged entry: render it again.
-        ref.fromCache = ref.image.width == options.width && ref.image.height == options.height &&
-                        ref.variance.width == options.width && ref.variance.height == options.height;
+        ref.cacheProblem.clear();
+        if (fs::exists(provenancePath)) {
+            try {
+                Provenance p = parseProvenance(render::readFileBounded(provenancePath, 1 << 20, "cache provenance"));
+                ref.cacheProblem = verifyProvenance(p, ref.key, keyMaterial, options.width, options.height);
+                if (ref.cacheProblem.empty()) {
+                    ref.image = render::readImage(ref.imagePath);
+                    ref.variance = render::readImage(variancePath);
+                    ref.cacheProblem = verifyPixels(p, ref.image, ref.variance);
+                }
+            } catch (const std::exception& e) {
+                ref.cacheProblem = e.what();
+            }
+            ref.fromCache = ref.cacheProblem.empty();
+        } else if (fs::exists(ref.imagePath) || fs::exists(variancePath)) {
+            ref.cacheProblem = "entry without provenance (an interrupted write)";
+        }
         return ref.fromCache;
     };
     if (readCached()) return ref;
@@ -125,10 +185,11 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
         {"pattern", options.pattern},      {"spp", std::to_string(options.spp)},
         {"seed", std::to_string(options.seed)}, {"integrator", options.integrator},
         {"max_depth", std::to_string(options.maxDepth)}, {"reference_key", ref.key}};
-    render::writeExr(variancePath, ref.variance, meta);
-    render::writeExr(ref.imagePath, ref.image, meta);
-    Provenance p;
+    ProvenanceRecord p;
     p.key = ref.key;
+    p.keyMaterial = keyMaterial;
+    p.imageChecksum = pixelChecksumHex(ref.image);
+    p.varianceChecksum = pixelChecksumHex(ref.variance);
     p.scene = scene.name();
     p.sceneFile = sceneFile;
     p.contentHash = scene.contentHash();
@@ -147,7 +208,7 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
     p.layout = r.layout;
     p.created = when;
     const std::string json = toJson(p, provenanceFields()).dump(2) + "\n";
-    writeTextFile(provenancePath, json);
+    publishReferenceEntry({{variancePath, &ref.variance}, {ref.imagePath, &ref.image}}, meta, provenancePath, json);
     return ref;
 }
 

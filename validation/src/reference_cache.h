@@ -16,14 +16,20 @@ struct Reference {
     std::string imagePath;    // the cached EXR
     double renderSeconds = 0; // 0 when read from the cache
     bool fromCache = false;
+    std::string cacheProblem; // why a cache entry that was there did not verify (it was re-rendered); empty if none
 };
 
 // Key over scene content hash, renderer version, resolution, spp, seed, pattern, integrator and depth.
 std::string referenceKey(const render::Scene& scene, const render::RenderOptions& options);
+// Everything the key hashes, in full: stored in the provenance and compared on every use.
+std::string referenceKeyMaterial(const render::Scene& scene, const render::RenderOptions& options);
+// The 16-hex-digit key of a key material.
+std::string keyOf(const std::string& keyMaterial);
 
 // Returns the cached reference for these options, or renders it (options.threads, .pattern, .spp, .seed,
-// size, integrator and depth as given) and stores it under cacheDir. The provenance JSON is written last
-// and marks an entry complete, so a crash mid-write leaves no entry that looks valid.
+// size, integrator and depth as given) and stores it under cacheDir. An entry is used only when its provenance
+// has the full key and both EXRs match its pixel checksums (reference_integrity.h); anything else is rendered
+// again and replaced by atomic renames, the provenance last.
 Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
                                 const render::RenderOptions& options, const std::string& cacheDir);
 

@@ -1,6 +1,8 @@
 #include "results.h"
 #include "fields.h"
 
+#include <stipple/render/input_limits.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <stipple/render/temporary_path.h>
+#include <stipple/render/temp_files.h>
 
 namespace stipple::validation {
 
@@ -126,14 +128,15 @@ std::string csvField(const std::string& text) {
 }
 
 void writeTextFile(const std::string& path, const std::string& text) {
-    const std::string tmp = render::temporaryPathFor(path);
+    render::TempPath tmp(path);
     {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) throw std::runtime_error("cannot write " + tmp);
+        std::ofstream out(tmp.path(), std::ios::binary);
+        if (!out) throw std::runtime_error("cannot write " + tmp.path());
         out << text;
-        if (!out) throw std::runtime_error("error writing " + tmp);
+        if (!out) throw std::runtime_error("error writing " + tmp.path());
     }
-    std::filesystem::rename(tmp, path);
+    std::filesystem::rename(tmp.path(), path);
+    tmp.release();
 }
 
 // ---- the field lists: JSON (both ways) and CSV come from these -------------------------------------------------
@@ -280,13 +283,23 @@ void writeResultsJson(const std::string& path, const Results& results, const std
 }
 
 Results readResultsJson(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot open results file");
+    std::string text;
+    try {
+        text = render::readFileBounded(path, render::limits::kMaxYamlFileBytes, "results file");
+    } catch (const render::InputLimitError& e) {
+        throw std::runtime_error(e.what());
+    }
     Json root;
     try {
-        root = Json::parse(in);
+        root = Json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        throw std::runtime_error(path + ": " + e.what()); // names the line and column
+        // file:line:column of the byte where parsing stopped, as every other reader of the project names it.
+        const size_t at = std::min<size_t>(e.byte ? e.byte - 1 : 0, text.size());
+        const size_t line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+        const size_t lineStart = text.rfind('\n', at ? at - 1 : 0);
+        const size_t column = at - (lineStart == std::string::npos || at == 0 ? 0 : lineStart + 1) + 1;
+        throw std::runtime_error(path + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                                 ": not valid JSON: " + e.what());
     }
     if (!root.is_object() || !root.contains("format") || root["format"] != kResultsFormat)
         throw std::runtime_error(path + ": not a stipple-validate results.json (no format \"" +

@@ -106,7 +106,7 @@ void writeResultsJson(const std::string& path, const Results& results, const std
 // naming the file (and line:column, or the record and field) on bad input.
 Results readResultsJson(const std::string& path);
 
-// Writes `text` to `path` through a temporary file (render::temporaryPathFor) renamed into place.
+// Writes `text` to `path` through a temporary file (render::TempPath) renamed into place.
 void writeTextFile(const std::string& path, const std::string& text);
 
 } // namespace stipple::validation

@@ -127,6 +127,8 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
         // run ends with a non-zero status after writing the report of the rest.
         try {
             progress.pause();
+            if (auto bad = opt.unloadable.find(ms.name); bad != opt.unloadable.end())
+                throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + bad->second);
             progress.note("loading " + ms.path);
             std::unique_ptr<render::Scene> scene;
             try {
@@ -156,6 +158,8 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
                               base.width, base.height, referenceKey(*scene, refOptions).c_str()));
             Reference ref = loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir);
+            if (!ref.cacheProblem.empty())
+                progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem + "): rendered again");
             info.referenceKey = ref.key;
             info.referenceSpp = refOptions.spp;
             info.referenceSeconds = ref.renderSeconds;
@@ -218,7 +222,9 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             results.scenes.push_back(info);
         } catch (const std::exception& e) {
             progress.resume();
-            std::string what = ms.path + ": " + e.what();
+            // std::bad_alloc's own text names an internal type: say what it means.
+            const bool oom = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+            std::string what = ms.path + ": " + (oom ? std::string("out of memory") : std::string(e.what()));
             progress.note("ERROR: " + what + " (skipping scene " + ms.name + ")");
             results.skipped.push_back({ms.name, what});
             std::erase_if(results.rows, [&](const ResultRow& r) { return r.scene == ms.name; });

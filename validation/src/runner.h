@@ -3,6 +3,7 @@
 // order rotated per group) so slow drifts of a shared machine hit every pattern alike.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "matrix.h"
@@ -16,6 +17,7 @@ struct RunOptions {
     int threads = 0;          // 0: the matrix's setting
     int shardIndex = 1, shardCount = 1; // this run does the groups g with g mod n == i − 1
     bool referencesOnly = false;        // make (or check) the references of this shard's scenes, no cells
+    std::map<std::string, std::string> unloadable; // scene name -> error found by the preflight: skipped
 };
 
 // One group = one (scene, spp, seed): the unit of sharding, so the patterns of a group stay interleaved.

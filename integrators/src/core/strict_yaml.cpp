@@ -1,4 +1,6 @@
 #include <stipple/yaml/strict_yaml.h>
+#include <stipple/render/input_limits.h>
+#include <yaml-cpp/depthguard.h>
 
 #include <cerrno>
 #include <cmath>
@@ -23,6 +25,9 @@ YAML::Node StrictYaml::parse(const std::string& text) const {
     YAML::Node root;
     try {
         root = YAML::Load(text);
+    } catch (const YAML::DeepRecursion& e) {
+        throw Error(file_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                    ": YAML nested deeper than the parser's limit");
     } catch (const YAML::ParserException& e) {
         throw Error(file_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
                     ": YAML syntax error: " + e.msg);
@@ -34,11 +39,13 @@ YAML::Node StrictYaml::parse(const std::string& text) const {
 }
 
 YAML::Node StrictYaml::load() const {
-    std::ifstream in(file_, std::ios::binary);
-    if (!in) throw Error(file_ + ": cannot open the file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse(text.str());
+    std::string text;
+    try {
+        text = render::readFileBounded(file_, render::limits::kMaxYamlFileBytes, "YAML file");
+    } catch (const render::InputLimitError& e) {
+        throw Error(e.what());
+    }
+    return parse(text);
 }
 
 void StrictYaml::rejectDuplicateKeys(const YAML::Node& node) const {

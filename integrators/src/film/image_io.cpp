@@ -3,7 +3,7 @@
 // is set, else OIIO's built-in linear -> sRGB. Both are written to a temporary file beside the target and renamed
 // into place, so a failed run never destroys a good image.
 #include <stipple/render/renderer.h>
-#include <stipple/render/temporary_path.h>
+#include <stipple/render/temp_files.h>
 
 #include <OpenImageIO/color.h>
 #include <OpenImageIO/imagebuf.h>
@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <mutex>
+#include <optional>
 #include <stdexcept>
 
 namespace stipple::render {
@@ -22,7 +22,11 @@ namespace stipple::render {
 namespace {
 
 void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, const void* pixels, OIIO::TypeDesc type) {
-    std::string tmp = temporaryPathFor(path);
+    // A path that is itself a registered temporary (output_publish.h) is written directly.
+    const bool direct = isTempName(std::filesystem::path(path).filename().string());
+    std::optional<TempPath> temp;
+    if (!direct) temp.emplace(path);
+    const std::string tmp = direct ? path : temp->path();
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw std::runtime_error("cannot write '" + path + "': " + OIIO::geterror());
     if (!out->open(tmp, spec) || !out->write_image(type, pixels)) {
@@ -31,13 +35,15 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, const v
         std::remove(tmp.c_str());
         throw std::runtime_error("cannot write '" + path + "': " + e);
     }
-    out->close();
+    if (!out->close()) {
+        std::remove(tmp.c_str());
+        throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
+    }
+    if (direct) return;
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
-    }
+    if (ec) throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
+    temp->release();
 }
 
 void checkImage(const Image& image, const std::string& path) {

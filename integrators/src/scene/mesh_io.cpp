@@ -1,6 +1,11 @@
 #include "scene/mesh_io.h"
 
+#include <stipple/render/input_limits.h>
+
+#include <sys/stat.h>
+
 #include <cstring>
+#include <filesystem>
 #include <iterator>
 #include <string_view>
 #include <fstream>
@@ -98,6 +103,9 @@ void addPolygon(TriangleMesh& mesh, const std::vector<long long>& idx, size_t ve
 TriangleMesh readPly(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw MeshFileError(path + ": cannot open file");
+    std::error_code sizeError;
+    const uint64_t fileBytes = std::filesystem::file_size(path, sizeError);
+    if (sizeError) throw MeshFileError(path + ": cannot read file size");
     std::string line;
     int lineNo = 0;
     auto where = [&] { return path + ":" + std::to_string(lineNo); };
@@ -126,6 +134,10 @@ TriangleMesh readPly(const std::string& path) {
             long long n = -1;
             ls >> e.name >> n;
             if (n < 0) throw MeshFileError(where() + ": element without a valid count");
+            // Every element takes at least one byte of the file: a larger count is a lie that would allocate.
+            if (uint64_t(n) > fileBytes)
+                throw MeshFileError(where() + ": element count " + std::to_string(n) + " exceeds the file's " +
+                                    std::to_string(fileBytes) + " bytes");
             e.count = size_t(n);
             elements.push_back(e);
         } else if (word == "property") {
@@ -274,6 +286,15 @@ TriangleMesh readObj(const std::string& path) {
 }
 
 TriangleMesh readMeshFile(const std::string& path) {
+    // A bound on the file before any parsing: devices and FIFOs never start, huge files fail at once.
+    {
+        struct stat st{};
+        if (::stat(path.c_str(), &st) != 0) throw MeshFileError(path + ": cannot open file");
+        if (!S_ISREG(st.st_mode)) throw MeshFileError(path + ": not a regular file");
+        if (uint64_t(st.st_size) > limits::kMaxMeshFileBytes)
+            throw MeshFileError(path + ": " + std::to_string(st.st_size) + " bytes; the limit for a mesh file is " +
+                                std::to_string(limits::kMaxMeshFileBytes) + " bytes");
+    }
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".ply") return readPly(path);

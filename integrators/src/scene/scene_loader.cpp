@@ -1,6 +1,8 @@
 #include "scene/scene_loader.h"
 
+#include "scene/input_limits.h"
 #include "scene/shape_builders.h"
+#include <stipple/render/input_limits.h>
 #include <stipple/render/renderer.h>
 
 #include <stipple/yaml/strict_yaml.h>
@@ -145,13 +147,15 @@ private:
 };
 
 YAML::Node Loader::loadYaml(const std::string& path, const YAML::Node* from, const std::string& key) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        if (from) failMsg(*from, key, "cannot open file '" + path + "'");
-        throw SceneError(path + ": cannot open scene file");
+    std::string text;
+    try {
+        text = readFileBounded(path, limits::kMaxYamlFileBytes, "scene file");
+    } catch (const InputLimitError& e) {
+        if (from) failMsg(*from, key, e.what());
+        throw SceneError(e.what());
     }
     try {
-        YAML::Node root = yaml::StrictYaml(path).load();
+        YAML::Node root = yaml::StrictYaml(path).parse(text);
         desc_.files.push_back(path);
         return root;
     } catch (const yaml::Error& e) {
@@ -175,6 +179,7 @@ void Loader::loadMain(const std::string& path) {
     if (root["shapes"]) parseShapeList(root["shapes"], desc_.shapes, false, "shapes");
     if (desc_.shapes.meshes.empty() && desc_.shapes.spheres.empty() && desc_.instances.empty())
         throw SceneError(where(root) + ": key 'shapes': expected at least one shape, got none");
+    checkSceneExtent(desc_);
 }
 
 void Loader::parseRender(const YAML::Node& n) {
@@ -187,6 +192,11 @@ void Loader::parseRender(const YAML::Node& n) {
     if (n["height"]) s.height = int(integer(n["height"], "height", 1, 1 << 15));
     if (n["spp"]) s.spp = uint32_t(integer(n["spp"], "spp", 1, 1 << 20));
     if (n["light_samples"]) s.lightSamples = uint32_t(integer(n["light_samples"], "light_samples", 1, 1024));
+    try {
+        checkRenderBudget(s.width, s.height, s.spp);
+    } catch (const std::invalid_argument& e) {
+        failMsg(n, "render", e.what());
+    }
     if (n["light_selection"])
         s.uniformLightSelection = oneOf(n["light_selection"], "light_selection", {"power", "uniform"}) == "uniform";
 }
@@ -199,11 +209,15 @@ void Loader::parseCamera(const YAML::Node& n) {
     c.position = vec3(require(n, "position", "camera"), "position");
     c.lookAt = vec3(require(n, "look_at", "camera"), "look_at");
     if (n["up"]) c.up = vec3(n["up"], "up");
+    for (const char* k : {"position", "look_at"})
+        if (std::string bad = beyondCoordinateLimit(k[0] == 'p' ? c.position : c.lookAt); !bad.empty())
+            failMsg(n[k], k, bad);
     c.fovDegrees = numberIn(require(n, "fov", "camera"), "fov", 1e-3, 179.0, "in (0, 179] degrees");
     if (lengthSquared(c.lookAt - c.position) == 0) fail(n["look_at"], "look_at", "a point different from position");
     if (lengthSquared(cross(c.lookAt - c.position, c.up)) == 0) fail(n["up"] ? n["up"] : n, "up", "a direction not parallel to the view direction");
     if (c.type == "thinlens") {
-        c.lensRadius = numberIn(require(n, "lens_radius", "a thinlens camera"), "lens_radius", 0, 1e30, ">= 0");
+        c.lensRadius = numberIn(require(n, "lens_radius", "a thinlens camera"), "lens_radius", 0,
+                                 limits::kMaxCoordinate, "in [0, " + fmt(limits::kMaxCoordinate) + "]");
         c.focusDistance =
             numberIn(require(n, "focus_distance", "a thinlens camera"), "focus_distance", 1e-6, 1e30, "> 0");
     } else {
@@ -320,6 +334,10 @@ void Loader::include(const YAML::Node& n) {
     std::string canonical = fs::absolute(path).lexically_normal().string();
     for (const auto& s : stack_)
         if (s == canonical) failMsg(n["file"], "file", "includes itself (cycle through '" + path + "')");
+    // Each level recurses through parseShapeList: a chain thousands deep would overflow the stack.
+    if (stack_.size() >= size_t(limits::kMaxIncludeDepth))
+        failMsg(n["file"], "file", "includes nested deeper than the limit of " +
+                                       std::to_string(limits::kMaxIncludeDepth) + " files");
     YAML::Node fileNode = n["file"];
     YAML::Node root = loadYaml(path, &fileNode, "file");
     std::string saved = file_;
@@ -423,6 +441,10 @@ TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& t
                 tm = readMeshFile(path);
             } catch (const MeshFileError& e) {
                 failMsg(n["file"], "file", std::string("cannot read mesh: ") + e.what());
+            } catch (const InputLimitError& e) {
+                failMsg(n["file"], "file", std::string("cannot read mesh: ") + e.what());
+            } catch (const std::bad_alloc&) {
+                failMsg(n["file"], "file", "cannot read mesh '" + path + "': out of memory");
             }
             desc_.files.push_back(path);
         } else {
@@ -459,6 +481,11 @@ TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& t
             pts.push_back({numberIn(p[0], "profile", 0, 1e30, "(radius) >= 0"), float(number(p[1], "profile"))});
         }
         int seg = n["segments"] ? int(integer(n["segments"], "segments", 3, 65536)) : 64;
+        if (uint64_t(pts.size()) * uint64_t(seg) * 2 > limits::kMaxTrianglesPerShape)
+            failMsg(n["segments"] ? n["segments"] : prof, "segments",
+                    std::to_string(pts.size()) + " profile points x " + std::to_string(seg) +
+                        " segments exceed the limit of " + std::to_string(limits::kMaxTrianglesPerShape) +
+                        " triangles per shape");
         tm = makeLathe(pts, seg);
         if (tm.indices.empty()) fail(prof, "profile", "a profile that sweeps a surface (some radius > 0)");
     }

@@ -98,6 +98,10 @@ public:
     virtual RenderResult render(const RenderOptions& options) const = 0;
 };
 
+// Parses a scene file and checks it as Scene::load does, without building anything to render it: the cheap
+// "will this load" of a run's preflight. Throws SceneError like Scene::load.
+void checkSceneFile(const std::string& path);
+
 // EXR metadata: bare snake_case keys (scene, content_hash, integrator, pattern, spp, seed, max_depth,
 // renderer, reference_key, render_seconds, ...), stored as "stipple:<key>". One vocabulary for every writer.
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;

@@ -1,0 +1,55 @@
+// Temporary files and folders that become outputs by rename. Every temporary is named
+//   <dir>/.<target name>.stipple-tmp-<host>-<pid>-<n>[<extension>]
+// beside its target (same file system, so the rename is atomic), registered while it exists, removed when the
+// process gets SIGINT / SIGTERM / SIGHUP, and swept by the next run when its process is gone (SIGKILL).
+#pragma once
+
+#include <string>
+
+namespace stipple::render {
+
+// A fresh temporary name beside `target`, keeping its extension (OIIO picks the format from it).
+std::string tempPathBeside(const std::string& target);
+
+// True when `name` (a file name, no folder) has the temporary pattern above.
+bool isTempName(const std::string& name);
+
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove every registered temporary and then end the
+// process with the signal's usual status. The handler only writes to a pipe (async-signal-safe); a cleanup
+// thread does the removal, so folders are removed whole. Idempotent.
+void installTempCleanupOnSignals();
+
+// Removes temporaries in `dir` (not recursive) whose process has ended: same host and no such pid, or older
+// than a day from another host. Returns how many were removed. A missing folder is not an error.
+size_t sweepStaleTemps(const std::string& dir);
+
+// A registered temporary: removed (file or folder) on destruction unless released after its rename.
+class TempPath {
+public:
+    explicit TempPath(const std::string& target);
+    ~TempPath();
+    TempPath(const TempPath&) = delete;
+    TempPath& operator=(const TempPath&) = delete;
+    const std::string& path() const { return path_; }
+    // The temporary has been renamed into place: forget it.
+    void release();
+
+private:
+    std::string path_;
+    bool released_ = false;
+};
+
+// Defers the signal cleanup while alive, so a group of renames (an EXR and its PNG) is not cut in half by a
+// SIGINT / SIGTERM; the cleanup (and the exit) happens when the guard ends.
+class SignalHold {
+public:
+    SignalHold();
+    ~SignalHold();
+    SignalHold(const SignalHold&) = delete;
+    SignalHold& operator=(const SignalHold&) = delete;
+
+private:
+    // Holds the lock the cleanup thread takes first.
+};
+
+} // namespace stipple::render

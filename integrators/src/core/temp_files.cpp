@@ -1,0 +1,181 @@
+#include <stipple/render/temp_files.h>
+
+#include <atomic>
+#include <cstring>
+#include <cerrno>
+#include <csignal>
+#include <ctime>
+#include <filesystem>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace stipple::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kMarker = ".stipple-tmp-";
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+std::mutex& registryMutex() {
+    static std::mutex m;
+    return m;
+}
+std::set<std::string>& registry() {
+    static std::set<std::string> r;
+    return r;
+}
+// Held by SignalHold; the cleanup thread takes it before removing anything, so a group of renames completes.
+std::mutex& holdMutex() {
+    static std::mutex m;
+    return m;
+}
+
+std::string hostName() {
+    char buf[256] = {};
+    if (gethostname(buf, sizeof buf - 1) != 0 || !buf[0]) return "host";
+    std::string h(buf);
+    for (char& c : h)
+        if (c == '/' || c == '-') c = '_';
+    return h;
+}
+
+int signalPipe[2] = {-1, -1};
+
+extern "C" void onSignal(int sig) {
+    const unsigned char b = static_cast<unsigned char>(sig);
+    const int saved = errno;
+    [[maybe_unused]] ssize_t n = write(signalPipe[1], &b, 1); // the only async-signal-safe work done here
+    errno = saved;
+}
+
+void cleanupThread() {
+    unsigned char b = 0;
+    while (read(signalPipe[0], &b, 1) < 0 && errno == EINTR) {
+    }
+    std::lock_guard hold(holdMutex());
+    {
+        std::lock_guard lock(registryMutex());
+        for (const std::string& p : registry()) {
+            std::error_code ec;
+            fs::remove_all(p, ec);
+        }
+        registry().clear();
+    }
+    // End as the signal would have: default action, delivered to this thread.
+    std::signal(int(b), SIG_DFL);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, int(b));
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+    raise(int(b));
+    _exit(128 + int(b));
+}
+
+// host, pid and age of a temporary name; false when the name is not one.
+bool parseTempName(const std::string& name, std::string& host, long& pid) {
+    const size_t m = name.find(kMarker);
+    if (name.empty() || name[0] != '.' || m == std::string::npos) return false;
+    const std::string rest = name.substr(m + std::strlen(kMarker)); // host-pid-n[ext]
+    const size_t last = rest.rfind('-');
+    if (last == std::string::npos || last == 0) return false;
+    const size_t prev = rest.rfind('-', last - 1);
+    if (prev == std::string::npos || prev == 0) return false;
+    host = rest.substr(0, prev);
+    const std::string p = rest.substr(prev + 1, last - prev - 1);
+    if (p.empty() || p.size() > 10 || p.find_first_not_of("0123456789") != std::string::npos) return false;
+    pid = std::stol(p);
+    return true;
+}
+
+} // namespace
+
+std::string tempPathBeside(const std::string& target) {
+    static std::atomic<unsigned> counter{0};
+    static const std::string host = hostName();
+    fs::path t(target);
+    std::string name = t.filename().string();
+    if (name.empty()) name = "output";
+    return (t.parent_path() / ("." + name + kMarker + host + "-" + std::to_string(getpid()) + "-" +
+                               std::to_string(counter++) + t.extension().string()))
+        .string();
+}
+
+bool isTempName(const std::string& name) {
+    std::string host;
+    long pid = 0;
+    return parseTempName(name, host, pid);
+}
+
+void installTempCleanupOnSignals() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (pipe2(signalPipe, O_CLOEXEC) != 0) return;
+        std::thread(cleanupThread).detach();
+        struct sigaction sa {};
+        sa.sa_handler = onSignal;
+        sigemptyset(&sa.sa_mask);
+        sa.sa_flags = SA_RESTART;
+        for (int s : kSignals) sigaction(s, &sa, nullptr);
+    });
+}
+
+size_t sweepStaleTemps(const std::string& dir) {
+    static const std::string host = hostName();
+    std::error_code ec;
+    size_t removed = 0;
+    const std::time_t now = std::time(nullptr);
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        std::string h;
+        long pid = 0;
+        if (!parseTempName(name, h, pid)) continue;
+        bool stale;
+        if (h == host) {
+            stale = pid != getpid() && kill(pid_t(pid), 0) != 0 && errno == ESRCH;
+        } else {
+            struct stat st {};
+            stale = lstat(it->path().c_str(), &st) == 0 && now - st.st_mtime > 24 * 3600;
+        }
+        if (!stale) continue;
+        std::error_code rec;
+        if (fs::remove_all(it->path(), rec) > 0 && !rec) ++removed;
+    }
+    return removed;
+}
+
+TempPath::TempPath(const std::string& target) : path_(tempPathBeside(target)) {
+    std::lock_guard lock(registryMutex());
+    registry().insert(path_);
+}
+
+TempPath::~TempPath() {
+    std::lock_guard lock(registryMutex());
+    if (!released_) {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    registry().erase(path_);
+}
+
+void TempPath::release() {
+    std::lock_guard lock(registryMutex());
+    released_ = true;
+    registry().erase(path_);
+}
+
+SignalHold::SignalHold() {
+    holdMutex().lock();
+}
+
+SignalHold::~SignalHold() {
+    holdMutex().unlock();
+}
+
+} // namespace stipple::render

@@ -1,0 +1,47 @@
+#include "film/output_publish.h"
+
+#include <stipple/render/temp_files.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace stipple::render {
+
+namespace fs = std::filesystem;
+
+std::string safeOutputStem(const std::string& sceneName) {
+    std::string s;
+    for (char c : sceneName) {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                        c == '_' || c == '-';
+        s += ok ? c : '_';
+    }
+    while (!s.empty() && s[0] == '.') s.erase(0, 1); // no hidden files, no "..": the name stays a plain file
+    if (s.size() > 100) s.resize(100);
+    return s.empty() ? "render" : s;
+}
+
+std::string publishRenderOutputs(const std::string& exrPath, const Image& image,
+                                 const std::vector<std::pair<std::string, std::string>>& metadata,
+                                 float exposureStops) {
+    const std::string pngPath = fs::path(exrPath).replace_extension(".png").string();
+    TempPath exrTemp(exrPath), pngTemp(pngPath);
+    writeExr(exrTemp.path(), image, metadata);
+    writePng(pngTemp.path(), image, exposureStops);
+    SignalHold hold; // both renames or, on a signal, neither (the temporaries are then removed)
+    std::error_code ec;
+    fs::rename(exrTemp.path(), exrPath, ec);
+    if (ec) throw std::runtime_error("cannot rename '" + exrTemp.path() + "' to '" + exrPath + "': " + ec.message());
+    exrTemp.release();
+    fs::rename(pngTemp.path(), pngPath, ec);
+    if (ec) {
+        // The new EXR is in place but its PNG is not: remove the stale PNG so no mismatched pair remains.
+        std::error_code ignored;
+        fs::remove(pngPath, ignored);
+        throw std::runtime_error("cannot rename '" + pngTemp.path() + "' to '" + pngPath + "': " + ec.message());
+    }
+    pngTemp.release();
+    return pngPath;
+}
+
+} // namespace stipple::render

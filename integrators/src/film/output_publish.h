@@ -1,0 +1,24 @@
+// Publishing one render's outputs together: the EXR and its PNG preview are both written to temporaries beside
+// their targets and renamed into place one after the other under a SignalHold, so a SIGINT / SIGTERM never
+// leaves a new EXR beside an old PNG; on any failure both temporaries are removed and the old pair stays.
+#pragma once
+
+#include <stipple/render/renderer.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace stipple::render {
+
+// A file name made from a scene's `name:` that stays in the working folder: characters outside
+// [A-Za-z0-9._-] become '_', leading dots are dropped, empty becomes "render", at most 100 characters.
+std::string safeOutputStem(const std::string& sceneName);
+
+// Writes `exrPath` (float EXR with metadata) and the PNG beside it (same stem), all or nothing.
+// Returns the PNG path.
+std::string publishRenderOutputs(const std::string& exrPath, const Image& image,
+                                 const std::vector<std::pair<std::string, std::string>>& metadata,
+                                 float exposureStops);
+
+} // namespace stipple::render

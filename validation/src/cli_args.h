@@ -1,0 +1,29 @@
+// stipple-validate's command line, parsed apart from main so the fuzzer (validation/fuzz) can drive it.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stipple::validation {
+
+extern const char* const kValidateUsage;
+
+// A bad command line: the message names the option and the value.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct Args {
+    std::string matrix, out = "report", cache, baseline;
+    int threads = 0, shardIndex = 1, shardCount = 1;
+    bool referencesOnly = false;
+    std::vector<std::string> merge;
+    bool help = false;    // -h / --help: print kValidateUsage and stop
+    bool version = false; // --version: print the version line and stop
+};
+
+// argv without the program name. Throws UsageError.
+Args parseArgs(const std::vector<std::string>& argv);
+
+} // namespace stipple::validation

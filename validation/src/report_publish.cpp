@@ -1,0 +1,69 @@
+#include "report_publish.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <stdio.h>
+
+namespace stipple::validation {
+
+namespace fs = std::filesystem;
+
+bool isReplaceableReportFolder(const std::string& dir) {
+    std::error_code ec;
+    if (!fs::exists(dir, ec)) return true;
+    if (!fs::is_directory(dir, ec)) return false;
+    if (fs::is_empty(dir, ec)) return true;
+    return fs::exists(fs::path(dir) / "index.html", ec) || fs::exists(fs::path(dir) / "results.json", ec);
+}
+
+ReportStaging::ReportStaging(const std::string& target)
+    : target_(fs::path(target).lexically_normal().string()), temp_(target_.empty() || target_.back() == '/'
+                                                                       ? target_.substr(0, target_.size() - 1)
+                                                                       : target_) {
+    const std::string leaf = fs::path(temp_.path()).filename().string();
+    if (target_.empty() || target_ == "." || target_ == ".." || target_ == "/" || target_.ends_with("/..") ||
+        target_.ends_with("/.") || leaf.rfind("...", 0) == 0)
+        throw std::runtime_error("-o " + target + ": must name a report folder, not the working folder, a parent or /");
+    if (!isReplaceableReportFolder(target_))
+        throw std::runtime_error("-o " + target + ": exists and is not a report folder (no index.html or "
+                                 "results.json); refusing to replace it");
+    std::error_code ec;
+    const fs::path parent = fs::absolute(temp_.path()).parent_path();
+    fs::create_directories(parent, ec);
+    render::sweepStaleTemps(parent.string());
+    if (!fs::create_directory(temp_.path(), ec) || ec)
+        throw std::runtime_error("-o " + target + ": cannot create a folder beside it (" + temp_.path() +
+                                 "): " + (ec ? ec.message() : std::string("it exists")));
+}
+
+void ReportStaging::publish() {
+    render::SignalHold hold;
+    const std::string& target = target_;
+    std::error_code ec;
+    if (fs::exists(target, ec)) {
+        // One atomic step: the old report takes the temporary's name, the new one the target's.
+        if (renameat2(AT_FDCWD, temp_.path().c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0) {
+            if (errno != EINVAL && errno != ENOSYS)
+                throw std::runtime_error("cannot swap the report into " + target + ": " + std::strerror(errno));
+            // A file system without exchange (NFS): the rename dance, with a moment when the target is absent.
+            render::TempPath old(target);
+            if (std::rename(target.c_str(), old.path().c_str()) != 0 ||
+                std::rename(temp_.path().c_str(), target.c_str()) != 0)
+                throw std::runtime_error("cannot move the report to " + target + ": " + std::strerror(errno));
+            temp_.release();
+            return; // old's destructor removes the previous report
+        }
+        // temp_ now names the old report: its destructor removes it (and so would a signal).
+        return;
+    }
+    if (std::rename(temp_.path().c_str(), target.c_str()) != 0)
+        throw std::runtime_error("cannot move the report to " + target + ": " + std::strerror(errno));
+    temp_.release();
+}
+
+} // namespace stipple::validation

@@ -1,0 +1,85 @@
+// The matrix loader on hostile input: every file in bad-matrices/ starts with "# expect: <substring>" and must
+// fail with a MatrixError containing it and naming file:line:column; generated inputs (an endless device, a FIFO,
+// a file beyond the size limit, nesting deeper than the parser allows) fail at once with the limit named.
+#define BOOST_TEST_MODULE matrix_limits
+#include <boost/test/unit_test.hpp>
+
+#include <stipple/render/input_limits.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "matrix.h"
+#include "test_vocabulary.h"
+
+using namespace stipple::validation;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string loadError(const std::string& path) {
+    try {
+        loadMatrix(path, test::kVocabulary);
+    } catch (const MatrixError& e) {
+        return e.what();
+    }
+    return "(loaded)";
+}
+
+fs::path freshDir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("stipple-matrix-limits-" + std::to_string(getpid())) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(every_bad_matrix_gives_its_message) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(STIPPLE_TEST_BAD_MATRICES))
+        if (e.path().extension() == ".yaml") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    BOOST_TEST(files.size() >= 6u);
+    const std::regex place(R"(\.yaml:[0-9]+:[0-9]+: )");
+    for (const fs::path& f : files) {
+        std::ifstream in(f);
+        std::string first;
+        std::getline(in, first);
+        const std::string tag = "# expect: ";
+        BOOST_REQUIRE_MESSAGE(first.rfind(tag, 0) == 0, f.filename() << ": first line must be '# expect: ...'");
+        const std::string expected = first.substr(tag.size()), msg = loadError(f.string());
+        BOOST_TEST_MESSAGE(f.filename().string() << ": " << msg);
+        BOOST_TEST(msg.find(expected) != std::string::npos, f.filename() << ": '" << msg << "' lacks '" << expected << "'");
+        BOOST_TEST(std::regex_search(msg, place), f.filename() << ": '" << msg << "' names no file:line:column");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(endless_and_special_files_fail_at_once) {
+    BOOST_TEST(loadError("/dev/zero").find("/dev/zero: matrix file is not a regular file") != std::string::npos);
+    BOOST_TEST(loadError("/nonexistent/m.yaml").find("cannot open matrix file") != std::string::npos);
+    const fs::path fifo = freshDir("fifo") / "m.yaml";
+    BOOST_REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    BOOST_TEST(loadError(fifo.string()).find("not a regular file") != std::string::npos); // would block forever
+}
+
+BOOST_AUTO_TEST_CASE(matrix_beyond_the_size_limit_fails_before_reading) {
+    const fs::path p = freshDir("big") / "m.yaml";
+    { std::ofstream(p) << "name: big\n"; }
+    fs::resize_file(p, stipple::render::limits::kMaxYamlFileBytes + 1);
+    const std::string msg = loadError(p.string());
+    BOOST_TEST(msg.find("matrix file is 16777217 bytes; the limit is 16777216 bytes") != std::string::npos, msg);
+}
+
+BOOST_AUTO_TEST_CASE(nesting_deeper_than_the_parser_allows_is_an_error) {
+    const std::string text = "name: x\nspp: " + std::string(100000, '[') + std::string(100000, ']') + "\n";
+    try {
+        parseMatrix(text, "deep.yaml", test::kVocabulary);
+        BOOST_ERROR("parsed 100000 nested lists");
+    } catch (const MatrixError& e) {
+        BOOST_TEST(std::string(e.what()).find("deep.yaml:2:") == 0u, e.what());
+        BOOST_TEST(std::string(e.what()).find("nested deeper than the parser's limit") != std::string::npos, e.what());
+    }
+}
