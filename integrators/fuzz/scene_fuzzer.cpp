@@ -22,57 +22,57 @@ namespace {
 namespace fs = std::filesystem;
 
 void require(bool condition) {
-  if (!condition) __builtin_trap();
+    if (!condition) __builtin_trap();
 }
 
 const std::string& scenePath() {
-  static const std::string path = [] {
-    fs::path dir = fs::temp_directory_path() / ("stipple-scene-fuzz-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    return (dir / "fuzz.yaml").string();
-  }();
-  return path;
+    static const std::string path = [] {
+        fs::path dir = fs::temp_directory_path() / ("stipple-scene-fuzz-" + std::to_string(getpid()));
+        fs::create_directories(dir);
+        return (dir / "fuzz.yaml").string();
+    }();
+    return path;
 }
 
 uint64_t primitiveCount(const stipple::render::ShapeGroup& g) {
-  uint64_t n = g.spheres.size();
-  for (const auto& m : g.meshes) n += m.indices.size() / 3;
-  return n;
+    uint64_t n = g.spheres.size();
+    for (const auto& m : g.meshes) n += m.indices.size() / 3;
+    return n;
 }
 
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size > 16384) return 0; // YAML anchors aside, bigger inputs only slow the search down
-  {
-    std::ofstream out(scenePath(), std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
-  }
-  using namespace stipple::render;
-  SceneDescription desc;
-  try {
-    desc = loadSceneDescription(scenePath());
-  } catch (const SceneError& e) {
-    const std::string message = e.what();
-    require(!message.empty() && message.find(':') != std::string::npos); // "file[:line:column]: what"
+    if (size > 16384) return 0; // YAML anchors aside, bigger inputs only slow the search down
+    {
+        std::ofstream out(scenePath(), std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+    }
+    using namespace stipple::render;
+    SceneDescription desc;
+    try {
+        desc = loadSceneDescription(scenePath());
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        require(!message.empty() && message.find(':') != std::string::npos); // "file[:line:column]: what"
+        return 0;
+    }
+    uint64_t primitives = primitiveCount(desc.shapes);
+    for (const auto& o : desc.objects) primitives += primitiveCount(o);
+    if (primitives > 2000 || desc.instances.size() > 64 || std::getenv("STIPPLE_FUZZ_PARSE_ONLY")) return 0;
+    try {
+        auto scene = Scene::load(scenePath());
+        RenderOptions options;
+        options.width = 4;
+        options.height = 4;
+        options.spp = 1;
+        options.maxDepth = 3;
+        options.threads = 1;
+        RenderResult r = scene->render(options);
+        require(r.image.width == 4 && r.image.height == 4 && r.image.rgb.size() == 48);
+        for (float v : r.image.rgb) require(std::isfinite(v) && v >= 0.0f);
+    } catch (const SceneError&) {
+        // Errors found only when building (e.g. a degenerate emitter) are fine as long as they are SceneErrors.
+    }
     return 0;
-  }
-  uint64_t primitives = primitiveCount(desc.shapes);
-  for (const auto& o : desc.objects) primitives += primitiveCount(o);
-  if (primitives > 2000 || desc.instances.size() > 64 || std::getenv("STIPPLE_FUZZ_PARSE_ONLY")) return 0;
-  try {
-    auto scene = Scene::load(scenePath());
-    RenderOptions options;
-    options.width = 4;
-    options.height = 4;
-    options.spp = 1;
-    options.maxDepth = 3;
-    options.threads = 1;
-    RenderResult r = scene->render(options);
-    require(r.image.width == 4 && r.image.height == 4 && r.image.rgb.size() == 48);
-    for (float v : r.image.rgb) require(std::isfinite(v) && v >= 0.0f);
-  } catch (const SceneError&) {
-    // Errors found only when building (e.g. a degenerate emitter) are fine as long as they are SceneErrors.
-  }
-  return 0;
 }

@@ -255,9 +255,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
 
 } // namespace
 
-void checkSceneFile(const std::string& path) {
-    loadSceneDescription(path);
-}
+void checkSceneFile(const std::string& path) { loadSceneDescription(path); }
 
 std::unique_ptr<Scene> Scene::load(const std::string& path) {
     auto start = std::chrono::steady_clock::now();

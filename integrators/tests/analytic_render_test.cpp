@@ -33,7 +33,8 @@ BOOST_AUTO_TEST_CASE(furnace_sphere_is_one_for_every_pattern) {
         BOOST_TEST_MESSAGE(pattern << ": mean " << e.mean << " sigma " << sigma);
         BOOST_TEST(r.nonFiniteSamples == 0u);
         BOOST_TEST(sigma > 0.0);
-        BOOST_TEST(std::abs(e.mean - 1.0) <= z * sigma, pattern << ": mean " << e.mean << ", expected 1 +- " << z * sigma);
+        BOOST_TEST(std::abs(e.mean - 1.0) <= z * sigma,
+                   pattern << ": mean " << e.mean << ", expected 1 +- " << z * sigma);
     }
 }
 
@@ -68,7 +69,8 @@ void checkMean(const std::string& file, double expected, double relativeBias, ui
     double tol = sidakZ(0.01, kTests) * std::sqrt(e.variance) + relativeBias * expected;
     BOOST_TEST_MESSAGE(file << ": mean " << e.mean << " expected " << expected << " +- " << tol);
     BOOST_TEST(r.nonFiniteSamples == 0u);
-    BOOST_TEST(std::abs(e.mean - expected) <= tol, file << ": mean " << e.mean << ", expected " << expected << " +- " << tol);
+    BOOST_TEST(std::abs(e.mean - expected) <= tol,
+               file << ": mean " << e.mean << ", expected " << expected << " +- " << tol);
 }
 } // namespace
 

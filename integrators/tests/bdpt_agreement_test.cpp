@@ -1,8 +1,9 @@
 // BDPT and the path tracer estimate the same image: a diffuse Cornell box, a glossy scene (rough plastic and
 // rough conductor under a sphere light and a quad light, open to the sky), a Cornell box with a glass and a
-// mirror sphere, and the Cornell box through a thin lens (defocused: splats must land where the lens projects). Each image is cut into 8x8 blocks; per block, K = 8 renders of each integrator (different
-// seeds) are compared by Welch's t-test (Jung et al. 2020); 2x2 blocks for the thin lens, whose defocus only
-// moves energy by a few pixels. Family-wise alpha = 0.01, Sidak-corrected over all blocks of the four scenes.
+// mirror sphere, and the Cornell box through a thin lens (defocused: splats must land where the lens projects). Each
+// image is cut into 8x8 blocks; per block, K = 8 renders of each integrator (different seeds) are compared by Welch's
+// t-test (Jung et al. 2020); 2x2 blocks for the thin lens, whose defocus only moves energy by a few pixels. Family-wise
+// alpha = 0.01, Sidak-corrected over all blocks of the four scenes.
 #define BOOST_TEST_MODULE bdpt_agreement
 #include <boost/test/unit_test.hpp>
 

@@ -35,9 +35,8 @@ void checkFurnace(const std::string& file, int maxDepth, uint64_t seed) {
     for (const RenderResult& r : s.renders) BOOST_TEST(r.nonFiniteSamples == 0u);
     BOOST_TEST(sd > 0.0);
     BOOST_TEST(sd < 0.005 * expected, file << ": spread " << sd << " too large for a meaningful bound");
-    BOOST_TEST(std::abs(e.mean - expected) <= t * sd,
-               file << " max depth " << maxDepth << ": mean " << e.mean << ", expected " << expected << " +- "
-                    << t * sd);
+    BOOST_TEST(std::abs(e.mean - expected) <= t * sd, file << " max depth " << maxDepth << ": mean " << e.mean
+                                                           << ", expected " << expected << " +- " << t * sd);
 }
 } // namespace
 

@@ -25,14 +25,15 @@ constexpr int kDepth = 5;
 
 struct Fixture {
     explicit Fixture(const std::string& file)
-        : scene(loadSceneDescription(scenePath(file))), camera(scene.description().camera, 24, 24),
-          eval(scene, camera), mis(eval), gen(scene, camera, kDepth) {
+        : scene(loadSceneDescription(scenePath(file))), camera(scene.description().camera, 24, 24), eval(scene, camera),
+          mis(eval), gen(scene, camera, kDepth) {
         layout.add("pixel", 2);
         if (camera.isThinLens()) layout.add("lens", 2);
         gen.declareDimensions(layout, true);
     }
     // Calls f(cameraSubpath, lightSubpath) for spp samples of a few pixels.
-    template <class F> void forSubpaths(uint32_t spp, F&& f) {
+    template <class F>
+    void forSubpaths(uint32_t spp, F&& f) {
         PixelSampler sampler(ShimLibrary::get(), "independent", spp, 3, layout);
         PixelSamples ps(sampler);
         TileContext tile;

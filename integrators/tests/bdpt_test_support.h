@@ -51,8 +51,9 @@ inline BlockEstimate blockEstimate(const SeedRenders& s, int x0, int y0, int w, 
     return e;
 }
 
-// Study RMS (its equation 1: channels summed, pixels averaged) of ONE render, estimated from the spread of K unbiased renders: the per-pixel
-// sample variance across renders summed over channels, averaged over pixels, square-rooted (bias is zero).
+// Study RMS (its equation 1: channels summed, pixels averaged) of ONE render, estimated from the spread of K unbiased
+// renders: the per-pixel sample variance across renders summed over channels, averaged over pixels, square-rooted (bias
+// is zero).
 inline double rmsFromSpread(const SeedRenders& s) {
     const RenderResult& r0 = s.renders.front();
     const int k = int(s.renders.size());

@@ -63,7 +63,8 @@ double chi2PValue(const Config& c, const ShimLibrary& shim, uint32_t configIndex
             if (!c.m.sample(wo, sv.get1D(dLobe), sv.get2D(dDir), bs)) continue;
             // The reported pdf must equal pdf() for the sampled direction (non-delta materials).
             float p = c.m.pdf(wo, bs.wi);
-            if (std::abs(p - bs.pdf) > 1e-3f * std::max(1.0f, p)) BOOST_ERROR(c.label << ": sample pdf " << bs.pdf << " != pdf() " << p);
+            if (std::abs(p - bs.pdf) > 1e-3f * std::max(1.0f, p))
+                BOOST_ERROR(c.label << ": sample pdf " << bs.pdf << " != pdf() " << p);
             observed[size_t(cellOf(bs.wi))] += 1;
         }
     }
@@ -110,11 +111,13 @@ double chi2PValue(const Config& c, const ShimLibrary& shim, uint32_t configIndex
     if (std::getenv("CHI2_DEBUG")) {
         std::vector<std::pair<double, size_t>> worst;
         for (size_t i = 0; i < observed.size(); ++i)
-            if (expected[i] >= 5) worst.push_back({(observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i], i});
+            if (expected[i] >= 5)
+                worst.push_back({(observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i], i});
         std::sort(worst.rbegin(), worst.rend());
         for (size_t k = 0; k < std::min<size_t>(6, worst.size()); ++k) {
             size_t i = worst[k].second;
-            std::printf("%s cell t%zu p%zu obs %.0f exp %.1f\n", c.label.c_str(), i / kPhiBins, i % kPhiBins, observed[i], expected[i]);
+            std::printf("%s cell t%zu p%zu obs %.0f exp %.1f\n", c.label.c_str(), i / kPhiBins, i % kPhiBins,
+                        observed[i], expected[i]);
         }
     }
     return chi.pValue;

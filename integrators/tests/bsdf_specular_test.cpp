@@ -77,7 +77,8 @@ BOOST_AUTO_TEST_CASE(rough_materials_do_not_create_energy) {
                             sum += bs.f.average() * std::abs(bs.wi.z) / bs.pdf;
                         }
                 double albedo = sum / (4.0 * n * n);
-                BOOST_TEST(albedo <= 1.01, "type " << int(type) << " alpha " << alpha << " cos " << ct << ": " << albedo);
+                BOOST_TEST(albedo <= 1.01,
+                           "type " << int(type) << " alpha " << alpha << " cos " << ct << ": " << albedo);
                 BOOST_TEST(albedo > 0.3);
             }
         }

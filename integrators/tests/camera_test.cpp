@@ -60,7 +60,7 @@ BOOST_AUTO_TEST_CASE(thin_lens_focuses_on_its_plane) {
     Ray a = cam.generateRay({20.5f, 11.5f}, {0.05f, 0.5f});
     Ray b = cam.generateRay({20.5f, 11.5f}, {0.95f, 0.3f});
     // Both reach the same point at focus distance along the view axis.
-    float ta = 4 / dot(a.d, cam.forward()) , tb = 4 / dot(b.d, cam.forward());
+    float ta = 4 / dot(a.d, cam.forward()), tb = 4 / dot(b.d, cam.forward());
     Vec3 pa = a.o + a.d * ta, pb = b.o + b.d * tb;
     // pa and pb lie on planes through the lens points, not the centre: compare their focus-plane projections.
     float da = dot(pa - cam.position(), cam.forward()), db = dot(pb - cam.position(), cam.forward());

@@ -103,8 +103,7 @@ BOOST_AUTO_TEST_CASE(exr_metadata_vocabulary) {
     writeExr(exr, im, {{"scene", "cornell-box"}, {"content_hash", "0123456789abcdef"}, {"spp", "8"}});
     const ImageMetadata back = readExrMetadata(exr);
     const ImageMetadata expected = {{"scene", "cornell-box"}, {"content_hash", "0123456789abcdef"}, {"spp", "8"}};
-    for (const auto& kv : expected)
-        BOOST_TEST((std::find(back.begin(), back.end(), kv) != back.end()), kv.first);
+    for (const auto& kv : expected) BOOST_TEST((std::find(back.begin(), back.end(), kv) != back.end()), kv.first);
     for (const auto& [key, value] : back) BOOST_TEST(key.find(':') == std::string::npos, key);
     auto in = OIIO::ImageInput::open(exr);
     BOOST_REQUIRE(in);

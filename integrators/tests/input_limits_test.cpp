@@ -28,9 +28,7 @@ fs::path freshDir(const std::string& name) {
     return dir;
 }
 
-void writeText(const fs::path& p, const std::string& text) {
-    std::ofstream(p) << text;
-}
+void writeText(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
 std::string loadError(const std::string& path) {
     try {
@@ -48,7 +46,8 @@ std::string includeChain(const fs::path& dir, int depth) {
                                      : std::string("shapes:\n") + kQuad;
         writeText(dir / ("part" + std::to_string(i) + ".yaml"), body);
     }
-    writeText(dir / "main.yaml", std::string("name: chain\n") + kHeader + "shapes:\n  - { type: include, file: part1.yaml }\n");
+    writeText(dir / "main.yaml",
+              std::string("name: chain\n") + kHeader + "shapes:\n  - { type: include, file: part1.yaml }\n");
     return (dir / "main.yaml").string();
 }
 

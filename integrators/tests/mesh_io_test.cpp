@@ -41,9 +41,10 @@ BOOST_AUTO_TEST_CASE(ply_binary_little_endian) {
 }
 
 BOOST_AUTO_TEST_CASE(ply_errors_name_the_line) {
-    std::string p = writeTempFile("c.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                           "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                           "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    std::string p =
+        writeTempFile("c.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
     try {
         readPly(p);
         BOOST_ERROR("no error for an out-of-range index");
@@ -65,7 +66,8 @@ namespace {
 double signedVolume(const TriangleMesh& m) {
     double v = 0;
     for (size_t i = 0; i < m.indices.size(); i += 3) {
-        const Vec3 &a = m.positions[m.indices[i]], &b = m.positions[m.indices[i + 1]], &c = m.positions[m.indices[i + 2]];
+        const Vec3 &a = m.positions[m.indices[i]], &b = m.positions[m.indices[i + 1]],
+                   &c = m.positions[m.indices[i + 2]];
         v += dot(a, cross(b, c)) / 6.0;
     }
     return v;
@@ -93,7 +95,8 @@ BOOST_AUTO_TEST_CASE(loader_shapes_instances_includes) {
     std::string main = writeTempFile(
         "main.yaml",
         "name: loader\n"
-        "camera: { type: thinlens, position: [0, 0, 5], look_at: [0, 0, 0], fov: 40, lens_radius: 0.1, focus_distance: 5 }\n"
+        "camera: { type: thinlens, position: [0, 0, 5], look_at: [0, 0, 0], fov: 40, lens_radius: 0.1, focus_distance: "
+        "5 }\n"
         "materials:\n  white: { type: diffuse, albedo: 0.5 }\n"
         "shapes:\n"
         "  - { type: include, file: inc.yaml }\n"
@@ -102,7 +105,8 @@ BOOST_AUTO_TEST_CASE(loader_shapes_instances_includes) {
         "  - { type: sphere, center: [0, 0, 0], radius: 1, material: white, transform: [ {scale: [1, 2, 1]} ] }\n"
         "  - { type: cylinder, base: [0, 0, 0], axis: [0, 1, 0], height: 1, radius: 0.1, material: white }\n"
         "  - { type: lathe, profile: [[0, 0], [1, 0.5], [0, 1]], segments: 8, material: white, emission: 2 }\n"
-        "  - { type: quad, vertices: [[0,0,0],[1,0,0],[1,0,1],[0,0,1]], material: white, emission: 1, two_sided: true }\n");
+        "  - { type: quad, vertices: [[0,0,0],[1,0,0],[1,0,1],[0,0,1]], material: white, emission: 1, two_sided: true "
+        "}\n");
     SceneDescription d = loadSceneDescription(main);
     BOOST_TEST(d.objects.size() == 1u);
     BOOST_TEST(d.instances.size() == 2u);

@@ -27,7 +27,7 @@ fs::path defaultShim() {
     return fs::path(exe).parent_path() / ".." / "lib" / "libstipple.so.1";
 }
 
-}  // namespace
+} // namespace
 
 BOOST_AUTO_TEST_CASE(identity_follows_the_file_bytes) {
     const fs::path original = defaultShim();
@@ -49,7 +49,7 @@ BOOST_AUTO_TEST_CASE(identity_follows_the_file_bytes) {
     const std::string idChanged = stipple::render::shimIdentity(changed.string());
     BOOST_CHECK_EQUAL(idSame, id);
     BOOST_CHECK_NE(idChanged, id);
-    BOOST_CHECK_EQUAL(idChanged.substr(0, idChanged.rfind(' ')), id.substr(0, id.rfind(' ')));  // same version
+    BOOST_CHECK_EQUAL(idChanged.substr(0, idChanged.rfind(' ')), id.substr(0, id.rfind(' '))); // same version
     fs::remove_all(dir);
 }
 

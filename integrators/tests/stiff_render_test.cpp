@@ -99,7 +99,7 @@ BOOST_AUTO_TEST_CASE(smallest_roughness_is_finite_and_conserves_energy) {
             const double sigma = std::sqrt(e.variance);
             BOOST_TEST_MESSAGE(file << " " << pattern << ": mean " << e.mean << " sigma " << sigma);
             BOOST_TEST(e.mean <= 1.0 + z * sigma, file << " " << pattern << ": mean " << e.mean << " exceeds 1 + "
-                                                        << z * sigma << ": energy created");
+                                                       << z * sigma << ": energy created");
             BOOST_TEST(e.mean >= 0.5, file << " " << pattern << ": mean " << e.mean << ": energy lost");
             if (std::string(pattern) == "independent") break; // one pattern suffices for the bound; Sidak counts 2
         }
@@ -192,6 +192,7 @@ BOOST_AUTO_TEST_CASE(max_depth_0_1_and_1000) {
         BOOST_TEST_MESSAGE("max depth " << depth << ": mean " << e.mean << " expected " << expected << " sigma "
                                         << sigma << ", " << seconds << " s, " << r.raysTraced << " rays");
         // Bias allowance 1e-5 relative: float accumulation (at depth 1 the furnace is nearly deterministic).
-        BOOST_TEST(std::abs(e.mean - expected) <= z * sigma + 1e-5 * expected, "depth " << depth << ": mean " << e.mean);
+        BOOST_TEST(std::abs(e.mean - expected) <= z * sigma + 1e-5 * expected,
+                   "depth " << depth << ": mean " << e.mean);
     }
 }

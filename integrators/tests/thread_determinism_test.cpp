@@ -25,4 +25,6 @@ BOOST_AUTO_TEST_CASE(path_cornell_box_one_vs_two_threads) { checkIdentical("corn
 BOOST_AUTO_TEST_CASE(path_cornell_box_poisson_one_vs_two_threads) {
     checkIdentical("cornell-box.yaml", "poisson", "path");
 }
-BOOST_AUTO_TEST_CASE(direct_glossy_one_vs_two_threads) { checkIdentical("glossy-lights.yaml", "independent", "direct"); }
+BOOST_AUTO_TEST_CASE(direct_glossy_one_vs_two_threads) {
+    checkIdentical("glossy-lights.yaml", "independent", "direct");
+}

@@ -30,14 +30,16 @@ uint64_t parseU64(const std::string& opt, const std::string& v) {
     char* end = nullptr;
     if (v.empty() || v[0] == '-') throw UsageError("option " + opt + ": expected an unsigned integer, got '" + v + "'");
     unsigned long long x = std::strtoull(v.c_str(), &end, 10);
-    if (*end != '\0' || errno != 0) throw UsageError("option " + opt + ": expected an unsigned integer, got '" + v + "'");
+    if (*end != '\0' || errno != 0)
+        throw UsageError("option " + opt + ": expected an unsigned integer, got '" + v + "'");
     return x;
 }
 
 float parseFloat(const std::string& opt, const std::string& v) {
     char* end = nullptr;
     float x = std::strtof(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !std::isfinite(x)) throw UsageError("option " + opt + ": expected a number, got '" + v + "'");
+    if (v.empty() || *end != '\0' || !std::isfinite(x))
+        throw UsageError("option " + opt + ": expected a number, got '" + v + "'");
     return x;
 }
 

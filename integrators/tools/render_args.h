@@ -22,10 +22,10 @@ struct RenderArgs {
     RenderOptions options;
     std::string scenePath, output; // output: empty means <safe scene name>.exr in the working folder
     bool printLayout = false;
-    bool help = false;             // -h / --help: print kRenderUsage and stop
-    bool version = false;          // --version: print the version line and stop
-    bool patternGiven = false;     // --pattern: main checks the name against the loaded shim's
-    bool blueNoise = false;        // --blue-noise: the pattern gets kBlueNoiseSuffix
+    bool help = false;         // -h / --help: print kRenderUsage and stop
+    bool version = false;      // --version: print the version line and stop
+    bool patternGiven = false; // --pattern: main checks the name against the loaded shim's
+    bool blueNoise = false;    // --blue-noise: the pattern gets kBlueNoiseSuffix
     float exposure = 0;
 };
 

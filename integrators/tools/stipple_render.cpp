@@ -56,8 +56,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> known;
         try {
             known = patternNames(args.options.shim);
-        } catch (const std::exception&) {
-        }
+        } catch (const std::exception&) {}
         const std::string base = args.options.pattern.substr(0, args.options.pattern.find(kBlueNoiseSuffix));
         if (!known.empty() && std::find(known.begin(), known.end(), base) == known.end()) {
             std::string list;
@@ -75,9 +74,10 @@ int main(int argc, char** argv) {
     const float exposure = args.exposure;
 
     // Temporaries of earlier runs that were killed (SIGKILL leaves them) go before this run adds its own.
-    sweepStaleTemps(output.empty() ? "." : std::filesystem::path(output).parent_path().empty()
-                                               ? "."
-                                               : std::filesystem::path(output).parent_path().string());
+    sweepStaleTemps(output.empty() ? "."
+                    : std::filesystem::path(output).parent_path().empty()
+                        ? "."
+                        : std::filesystem::path(output).parent_path().string());
     std::unique_ptr<Scene> scene;
     try {
         scene = Scene::load(scenePath);
@@ -104,8 +104,8 @@ int main(int argc, char** argv) {
         const std::string& integrator = r.settings.integrator;
         const uint32_t spp = r.settings.spp;
         std::cout << "layout:\n" << r.layout;
-        std::cout << "render " << fmt(r.renderSeconds) << " s (" << r.image.width << "x" << r.image.height << ", " << spp
-                  << " spp, " << options.pattern << ", " << integrator << ")\n"
+        std::cout << "render " << fmt(r.renderSeconds) << " s (" << r.image.width << "x" << r.image.height << ", "
+                  << spp << " spp, " << options.pattern << ", " << integrator << ")\n"
                   << "sampler " << fmt(r.samplerSeconds, 4) << " s ("
                   << fmt(r.renderSeconds > 0 ? 100 * r.samplerSeconds / r.renderSeconds : 0, 1) << "% of render)\n"
                   << "rays " << r.raysTraced << " (" << fmt(r.raysTraced / std::max(1e-9, r.renderSeconds) / 1e6, 2)

@@ -10,9 +10,9 @@ namespace stipple::citygen {
 
 namespace {
 
-constexpr double kRecess = 0.24;       // window reveal depth
-constexpr double kPorticoDepth = 3.2;  // arcade: front wall to the shop fronts behind
-constexpr double kArchWall = 0.55;     // arcade: thickness of the arched wall
+constexpr double kRecess = 0.24;      // window reveal depth
+constexpr double kPorticoDepth = 3.2; // arcade: front wall to the shop fronts behind
+constexpr double kArchWall = 0.55;    // arcade: thickness of the arched wall
 
 enum class Opening { Window, Door, Shop, Arch, Blank };
 
@@ -44,8 +44,16 @@ void rectangularCell(BuildingParts& p, const Frame& f, double s0, double s1, dou
     }
     const double mid = 0.5 * (s0 + s1);
     double width = w.width, b0 = t0 + w.sill, b1 = t0 + w.sill + w.height;
-    if (kind == Opening::Door) { width = std::min(1.3, s1 - s0 - 0.8); b0 = t0; b1 = t0 + 2.7; }
-    if (kind == Opening::Shop) { width = std::min(2.2, s1 - s0 - 0.7); b0 = t0; b1 = t0 + 2.9; }
+    if (kind == Opening::Door) {
+        width = std::min(1.3, s1 - s0 - 0.8);
+        b0 = t0;
+        b1 = t0 + 2.7;
+    }
+    if (kind == Opening::Shop) {
+        width = std::min(2.2, s1 - s0 - 0.7);
+        b0 = t0;
+        b1 = t0 + 2.9;
+    }
     b1 = std::min(b1, t1 - 0.3);
     const double a0 = mid - width / 2, a1 = mid + width / 2;
 
@@ -71,8 +79,7 @@ void rectangularCell(BuildingParts& p, const Frame& f, double s0, double s1, dou
         p.shutter.addBox(f, {mid - 0.03, b0, -kRecess}, {mid + 0.03, b1, -kRecess + 0.06});
         double tt = b0 + 0.72 * (b1 - b0);
         p.shutter.addBox(f, {a0, tt - 0.03, -kRecess}, {a1, tt + 0.03, -kRecess + 0.06});
-        if (kind == Opening::Window && b0 > t0 + 0.1)
-            p.trim.addBox(f, {a0 - 0.08, b0 - 0.07, 0}, {a1 + 0.08, b0, 0.1});
+        if (kind == Opening::Window && b0 > t0 + 0.1) p.trim.addBox(f, {a0 - 0.08, b0 - 0.07, 0}, {a1 + 0.08, b0, 0.1});
     }
     // lintel, and on the piano nobile a triangular pediment
     p.trim.addBox(f, {a0 - 0.12, b1, 0}, {a1 + 0.12, b1 + 0.14, 0.08});
@@ -126,7 +133,8 @@ void archCell(BuildingParts& p, const Frame& f, double s0, double s1, double t0,
         // archivolt: a stone band around the arch, proud of the wall
         auto [X0, Y0] = std::pair{xc + (x0 - xc) * (r + 0.18) / r, spring + (y0 - spring) * (r + 0.18) / r};
         auto [X1, Y1] = std::pair{xc + (x1 - xc) * (r + 0.18) / r, spring + (y1 - spring) * (r + 0.18) / r};
-        if (std::max(Y0, Y1) < t1) p.trim.addQuad(f(x0, y0, 0.03), f(x1, y1, 0.03), f(X1, Y1, 0.03), f(X0, Y0, 0.03), f.ez);
+        if (std::max(Y0, Y1) < t1)
+            p.trim.addQuad(f(x0, y0, 0.03), f(x1, y1, 0.03), f(X1, Y1, 0.03), f(X0, Y0, 0.03), f.ez);
     }
     if (!portico) {
         // dark back of the niche: the rectangle below the spring and a fan for the half disc
@@ -163,14 +171,16 @@ void facade(BuildingParts& p, const BuildingSpec& spec, const FacadeInfo& fi, co
             if (k == 0) {
                 Opening kind = ground[size_t(i)];
                 if (i >= fi.blankGroundFrom && i <= fi.blankGroundTo) kind = Opening::Blank;
-                if (kind == Opening::Arch) archCell(p, f, s0, s1, t0, t1, 0.38, 2.6, fi.front && spec.arcade, t1 - 0.25);
-                else rectangularCell(p, f, s0, s1, t0, t1, kind, windows[0], false, false);
+                if (kind == Opening::Arch)
+                    archCell(p, f, s0, s1, t0, t1, 0.38, 2.6, fi.front && spec.arcade, t1 - 0.25);
+                else
+                    rectangularCell(p, f, s0, s1, t0, t1, kind, windows[0], false, false);
             } else if (top && spec.belfry) {
                 archCell(p, f, s0, s1, t0, t1, 0.3, 1.2, false, t1);
             } else {
                 Window w = windows[size_t(std::min(k, int(windows.size()) - 1))];
-                bool balcony = fi.front && k == 1 &&
-                               std::find(balconyBays.begin(), balconyBays.end(), i) != balconyBays.end();
+                bool balcony =
+                    fi.front && k == 1 && std::find(balconyBays.begin(), balconyBays.end(), i) != balconyBays.end();
                 if (balcony) {
                     w.height += w.sill - 0.05;
                     w.sill = 0.05;
@@ -198,17 +208,20 @@ BuildingParts buildBuilding(const BuildingSpec& spec, Rng& rng) {
     // one window family per building, smaller towards the top
     std::vector<Window> windows;
     double ww = spec.slitWindows ? 0.45 : rng.uniform(0.9, 1.15);
-    windows.push_back({ww * 0.8, 1.1, 1.5});                              // ground floor: small, high
-    windows.push_back({ww, spec.slitWindows ? 1.3 : 2.0, 0.75});          // piano nobile
-    windows.push_back({ww, spec.slitWindows ? 1.1 : 1.7, 0.9});           // upper floors
-    if (spec.floors >= 5) windows.push_back({ww, 1.15, 1.1});             // attic
+    windows.push_back({ww * 0.8, 1.1, 1.5});                     // ground floor: small, high
+    windows.push_back({ww, spec.slitWindows ? 1.3 : 2.0, 0.75}); // piano nobile
+    windows.push_back({ww, spec.slitWindows ? 1.1 : 1.7, 0.9});  // upper floors
+    if (spec.floors >= 5) windows.push_back({ww, 1.15, 1.1});    // attic
     const bool shutters = !spec.slitWindows && rng.chance(0.8);
 
     std::vector<Opening> frontGround(size_t(spec.baysX));
     for (int i = 0; i < spec.baysX; ++i) {
-        if (spec.arcade) frontGround[size_t(i)] = Opening::Arch;
-        else if (i == spec.baysX / 2) frontGround[size_t(i)] = Opening::Door;
-        else frontGround[size_t(i)] = rng.chance(0.55) ? Opening::Shop : Opening::Window;
+        if (spec.arcade)
+            frontGround[size_t(i)] = Opening::Arch;
+        else if (i == spec.baysX / 2)
+            frontGround[size_t(i)] = Opening::Door;
+        else
+            frontGround[size_t(i)] = rng.chance(0.55) ? Opening::Shop : Opening::Window;
     }
     std::vector<int> balconies;
     for (int b = 0; b < spec.balconies; ++b) {

@@ -13,18 +13,18 @@ namespace stipple::citygen {
 enum class RoofKind { Gable, Hip };
 
 struct BuildingSpec {
-    int baysX = 4;          // along the street (front facade, +z)
-    int baysZ = 4;          // along the depth
-    double bay = 3.2;       // metres per bay
-    int floors = 4;         // ground floor included
+    int baysX = 4;    // along the street (front facade, +z)
+    int baysZ = 4;    // along the depth
+    double bay = 3.2; // metres per bay
+    int floors = 4;   // ground floor included
     double groundHeight = 4.4;
     double storeyHeight = 3.4;
-    bool arcade = false;    // ground floor of the front facade is a portico of arches
-    bool belfry = false;    // top storey opens in arches on all sides (the campanile)
+    bool arcade = false; // ground floor of the front facade is a portico of arches
+    bool belfry = false; // top storey opens in arches on all sides (the campanile)
     bool slitWindows = false;
     RoofKind roof = RoofKind::Gable;
     double pitchDegrees = 22;
-    int balconies = 0;      // on the first floor of the front
+    int balconies = 0; // on the first floor of the front
     int chimneys = 0;
 
     double width() const { return baysX * bay; }
@@ -41,11 +41,11 @@ struct DetailPlacement {
 };
 
 struct BuildingParts {
-    Mesh wall;      // plaster
-    Mesh trim;      // stone: sills, lintels, cornices, arches
-    Mesh glass;     // dark window panes and door voids
-    Mesh shutter;   // wooden shutters, doors, window frames
-    Mesh roof;      // clay tiles
+    Mesh wall;    // plaster
+    Mesh trim;    // stone: sills, lintels, cornices, arches
+    Mesh glass;   // dark window panes and door voids
+    Mesh shutter; // wooden shutters, doors, window frames
+    Mesh roof;    // clay tiles
     std::vector<DetailPlacement> details;
 };
 

@@ -14,8 +14,9 @@ namespace {
 
 int usage(const char* msg, const char* arg) {
     std::fprintf(stderr, "stipple-citygen: %s%s%s\n", msg, arg ? ": " : "", arg ? arg : "");
-    std::fprintf(stderr, "usage: stipple-citygen [--seed N] [--out DIR] [--name NAME] | --version\n"
-                         "  writes DIR/NAME.yaml and DIR/NAME/*.ply (defaults: seed 1, DIR ., NAME italian-city-town)\n");
+    std::fprintf(stderr,
+                 "usage: stipple-citygen [--seed N] [--out DIR] [--name NAME] | --version\n"
+                 "  writes DIR/NAME.yaml and DIR/NAME/*.ply (defaults: seed 1, DIR ., NAME italian-city-town)\n");
     return 2;
 }
 
@@ -40,7 +41,8 @@ int main(int argc, char** argv) {
             out = v;
         } else if (a == "--name") {
             name = v;
-            if (name.empty() || name.find('/') != std::string::npos) return usage("--name expects a plain file stem, got", v);
+            if (name.empty() || name.find('/') != std::string::npos)
+                return usage("--name expects a plain file stem, got", v);
         } else {
             return usage("unknown argument", argv[i - 1]);
         }

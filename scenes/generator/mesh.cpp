@@ -9,7 +9,6 @@
 #include <numbers>
 #include <stdexcept>
 
-
 namespace stipple::citygen {
 
 uint32_t Mesh::addVertex(Vec3 p) {
@@ -19,9 +18,7 @@ uint32_t Mesh::addVertex(Vec3 p) {
     return uint32_t(positions_.size() / 3 - 1);
 }
 
-void Mesh::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
-    indices_.insert(indices_.end(), {a, b, c});
-}
+void Mesh::addTriangle(uint32_t a, uint32_t b, uint32_t c) { indices_.insert(indices_.end(), {a, b, c}); }
 
 void Mesh::addTriangle(Vec3 a, Vec3 b, Vec3 c, Vec3 facing) {
     if (dot(cross(b - a, c - a), facing) < 0) std::swap(b, c);
@@ -44,8 +41,7 @@ void Mesh::addRect(const Frame& f, double s0, double t0, double s1, double t1, d
 
 void Mesh::addBox(const Frame& f, Vec3 lo, Vec3 hi) {
     Vec3 p[8];
-    for (int i = 0; i < 8; ++i)
-        p[i] = f(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    for (int i = 0; i < 8; ++i) p[i] = f(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
     addQuad(p[0], p[2], p[6], p[4], f.ex * -1.0);
     addQuad(p[1], p[3], p[7], p[5], f.ex);
     addQuad(p[0], p[1], p[5], p[4], f.ey * -1.0);
@@ -78,9 +74,12 @@ void Mesh::addLathe(const Frame& f, const std::vector<std::pair<double, double>>
             Vec3 radial = f.dir({std::cos(phi), 0, -std::sin(phi)});
             Vec3 facing = radial * (h1 - h0) + f.ey * (r0 - r1);
             if (r0 == 0 && r1 == 0) continue;
-            if (r0 == 0) addTriangle(a, c, d, facing);
-            else if (r1 == 0) addTriangle(a, b, c, facing);
-            else addQuad(a, b, c, d, facing);
+            if (r0 == 0)
+                addTriangle(a, c, d, facing);
+            else if (r1 == 0)
+                addTriangle(a, b, c, facing);
+            else
+                addQuad(a, b, c, d, facing);
         }
     }
 }

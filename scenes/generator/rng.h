@@ -8,8 +8,7 @@ namespace stipple::citygen {
 
 class Rng {
 public:
-    explicit Rng(uint64_t seed, uint64_t stream = 0x9e3779b97f4a7c15ull)
-        : inc_((stream << 1u) | 1u) {
+    explicit Rng(uint64_t seed, uint64_t stream = 0x9e3779b97f4a7c15ull) : inc_((stream << 1u) | 1u) {
         next();
         state_ += seed;
         next();

@@ -9,11 +9,11 @@ namespace stipple::citygen {
 namespace {
 
 constexpr double kOverhang = 0.45;
-constexpr double kRaise = 0.1;          // roof plane sits this far above the wall top at the wall line
+constexpr double kRaise = 0.1; // roof plane sits this far above the wall top at the wall line
 constexpr double kTileSpacing = 0.30;
 constexpr double kTileRadius = 0.11;
 constexpr double kCourse = 0.45;
-constexpr double kCourseLift = 0.035;   // each course's lower end overlaps the one below
+constexpr double kCourseLift = 0.035; // each course's lower end overlaps the one below
 
 // Roof-local coordinates put the ridge along +x: long side Wr, short side Dr. `base` maps them to the building.
 struct RoofSetup {

@@ -47,8 +47,8 @@ double meanOf(const RenderResult& r) {
 void tinyRender(const std::string& name, int width, int height, double minMean, double maxMean) {
     auto scene = Scene::load(scenePath(name));
     BOOST_TEST(scene->name() == name);
-    BOOST_TEST_MESSAGE(name << ": load " << scene->loadSeconds() << " s, BVH build " << scene->buildSeconds()
-                            << " s, " << scene->triangleCount() << " triangles");
+    BOOST_TEST_MESSAGE(name << ": load " << scene->loadSeconds() << " s, BVH build " << scene->buildSeconds() << " s, "
+                            << scene->triangleCount() << " triangles");
     RenderOptions o;
     o.width = width;
     o.height = height;
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(layout) {
                 BOOST_TEST(has(names, "b0.light.pos"));
                 BOOST_TEST(has(names, "b0.bsdf.dir"));
                 BOOST_TEST(has(names, "b0.light.choice")); // five lights
-                BOOST_TEST(!has(names, "b1."));           // no path continuation
+                BOOST_TEST(!has(names, "b1."));            // no path continuation
                 BOOST_TEST(!has(names, ".rr"));
             } else {
                 const int depth = name == "veach-bidir" ? 7 : 5;

@@ -32,11 +32,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char *kAllPatterns[] = {"independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"};
+const char* kAllPatterns[] = {"independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"};
 
 struct Integrand {
-    const char *name;
-    std::function<double(const float *)> f;
+    const char* name;
+    std::function<double(const float*)> f;
     double exact;
 };
 
@@ -45,18 +45,21 @@ std::vector<Integrand> integrands(int dim) {
     const double pi = 3.14159265358979323846;
     const double sigma = 0.15;
     const double g1 = sigma * std::sqrt(2 * pi) * std::erf(0.5 / (sigma * std::sqrt(2.0)));
-    auto gauss = [sigma, dim](const float *p) {
+    auto gauss = [sigma, dim](const float* p) {
         double r2 = 0;
         for (int c = 0; c < dim; ++c) r2 += (p[c] - 0.5) * (p[c] - 0.5);
         return std::exp(-r2 / (2 * sigma * sigma));
     };
     if (dim == 2)
-        return {{"disk", [](const float *p) { return (p[0] - 0.5) * (p[0] - 0.5) + (p[1] - 0.5) * (p[1] - 0.5) < 0.16 ? 1.0 : 0.0; },
+        return {{"disk",
+                 [](const float* p) {
+                     return (p[0] - 0.5) * (p[0] - 0.5) + (p[1] - 0.5) * (p[1] - 0.5) < 0.16 ? 1.0 : 0.0;
+                 },
                  pi * 0.16},
-                {"step", [](const float *p) { return p[0] < 0.3 + 0.4 * p[1] ? 1.0 : 0.0; }, 0.5},
+                {"step", [](const float* p) { return p[0] < 0.3 + 0.4 * p[1] ? 1.0 : 0.0; }, 0.5},
                 {"gaussian", gauss, g1 * g1}};
     return {{"ball",
-             [](const float *p) {
+             [](const float* p) {
                  double r2 = 0;
                  for (int c = 0; c < 3; ++c) r2 += (p[c] - 0.5) * (p[c] - 0.5);
                  return r2 < 0.16 ? 1.0 : 0.0;
@@ -65,7 +68,7 @@ std::vector<Integrand> integrands(int dim) {
             {"gaussian", gauss, g1 * g1 * g1}};
 }
 
-void check(stipple_status s, const char *what) {
+void check(stipple_status s, const char* what) {
     if (s != STIPPLE_OK) {
         std::cerr << what << ": " << stipple_last_error_message() << "\n";
         std::exit(1);
@@ -75,7 +78,7 @@ void check(stipple_status s, const char *what) {
 struct Sampler {
     stipple_sampler s = nullptr;
     uint32_t floats = 0;
-    Sampler(const char *pattern, uint32_t n, int dim, uint64_t seed, uint32_t flags = 0) {
+    Sampler(const char* pattern, uint32_t n, int dim, uint64_t seed, uint32_t flags = 0) {
         uint32_t id;
         check(stipple_pattern_from_name(pattern, &id), pattern);
         stipple_dimension_desc d{};
@@ -94,13 +97,13 @@ struct Sampler {
         floats = n * uint32_t(dim);
     }
     ~Sampler() { stipple_sampler_release(s); }
-    void fill(uint32_t x, uint32_t y, std::vector<float> &out) const {
+    void fill(uint32_t x, uint32_t y, std::vector<float>& out) const {
         out.resize(floats);
         check(stipple_sampler_fill_pixel(s, x, y, 0, out.data(), out.size()), "fill_pixel");
     }
 };
 
-double estimate(const Integrand &g, const std::vector<float> &points, int dim) {
+double estimate(const Integrand& g, const std::vector<float>& points, int dim) {
     const size_t n = points.size() / dim;
     double sum = 0;
     for (size_t i = 0; i < n; ++i) sum += g.f(&points[i * dim]);
@@ -113,14 +116,14 @@ double threadSeconds() {
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-double mean(const std::vector<double> &v) {
+double mean(const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += x;
     return s / double(v.size());
 }
 
 // Least-squares slope of log MSE against log N.
-double fitSlope(const std::vector<double> &ns, const std::vector<double> &mses) {
+double fitSlope(const std::vector<double>& ns, const std::vector<double>& mses) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     const double m = double(ns.size());
     for (size_t i = 0; i < ns.size(); ++i) {
@@ -135,10 +138,10 @@ struct SlopeEstimate {
 };
 
 // Slope of the MSE curve with a 95% percentile-bootstrap interval over the sets at each N.
-SlopeEstimate slopeWithInterval(const std::vector<double> &ns, const std::vector<std::vector<double>> &sq,
+SlopeEstimate slopeWithInterval(const std::vector<double>& ns, const std::vector<std::vector<double>>& sq,
                                 uint64_t seed) {
     std::vector<double> mses;
-    for (const auto &v : sq) mses.push_back(mean(v));
+    for (const auto& v : sq) mses.push_back(mean(v));
     const double slope = fitSlope(ns, mses);
     constexpr int kBoot = 400;
     std::vector<double> boots;
@@ -160,8 +163,8 @@ SlopeEstimate slopeWithInterval(const std::vector<double> &ns, const std::vector
 struct Ratio {
     double ratio, low, high;
 };
-Ratio mseRatio(const std::vector<double> &a, const std::vector<double> &b) {
-    auto logVar = [](const std::vector<double> &v) {
+Ratio mseRatio(const std::vector<double>& a, const std::vector<double>& b) {
+    auto logVar = [](const std::vector<double>& v) {
         const double m = mean(v);
         double s = 0;
         for (double x : v) s += (x - m) * (x - m);
@@ -178,7 +181,7 @@ std::string fmt(double v, int precision = 2) {
 }
 
 // In-place radix-2 FFT.
-void fft(std::vector<std::complex<double>> &a) {
+void fft(std::vector<std::complex<double>>& a) {
     const size_t n = a.size();
     for (size_t i = 1, j = 0; i < n; ++i) {
         size_t bit = n >> 1;
@@ -201,7 +204,7 @@ void fft(std::vector<std::complex<double>> &a) {
 }
 
 // Periodogram |F(k)|^2 / pixels of a size x size error image (white noise of variance s^2 has mean s^2).
-std::vector<double> periodogram(const std::vector<double> &image, size_t size) {
+std::vector<double> periodogram(const std::vector<double>& image, size_t size) {
     std::vector<std::complex<double>> rows(size * size);
     for (size_t i = 0; i < image.size(); ++i) rows[i] = image[i];
     std::vector<std::complex<double>> line(size);
@@ -220,17 +223,20 @@ std::vector<double> periodogram(const std::vector<double> &image, size_t size) {
     return power;
 }
 
-}  // namespace
+} // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
     fs::path outDir = "pattern_table";
     int sets = 500;
     bool quick = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "-o" && i + 1 < argc) outDir = argv[++i];
-        else if (a == "--sets" && i + 1 < argc) sets = std::atoi(argv[++i]);
-        else if (a == "--quick") quick = true;
+        if (a == "-o" && i + 1 < argc)
+            outDir = argv[++i];
+        else if (a == "--sets" && i + 1 < argc)
+            sets = std::atoi(argv[++i]);
+        else if (a == "--quick")
+            quick = true;
         else {
             std::cout << "usage: " << argv[0] << " [-o DIR] [--sets R (500)] [--quick]\n";
             return a == "-h" || a == "--help" ? 0 : 2;
@@ -245,7 +251,7 @@ int main(int argc, char **argv) {
     table << "| pattern | rho (2D, N = 1024, mean) | disk slope [95%] | step slope [95%] | Gaussian slope [95%] | "
              "Gaussian slope N = 256..4096 [95%] | cost per value (ns, 2D N = 4096) |\n|---|---|---|---|---|---|---|\n";
     const auto g2 = integrands(2);
-    for (const char *pattern : kAllPatterns) {
+    for (const char* pattern : kAllPatterns) {
         std::vector<std::vector<std::vector<double>>> sq(g2.size(), std::vector<std::vector<double>>(slopeNs.size()));
         std::vector<float> points;
         double rhoSum = 0;
@@ -294,14 +300,14 @@ int main(int argc, char **argv) {
     {
         constexpr size_t kSize = 128;
         const int images = quick ? 6 : 24;
-        const Integrand &g = g2[2];  // the Gaussian: the smooth integrand the per-pixel error is measured on
+        const Integrand& g = g2[2]; // the Gaussian: the smooth integrand the per-pixel error is measured on
         std::ofstream md(outDir / "blue_noise.md");
         std::ofstream csv(outDir / "spectrum_blue.csv");
         csv << "pattern,flag,N,radius,power_over_mse\n";
         md << "| pattern | N | flag | per-pixel MSE | MSE ratio flag/plain [95%] | low-quarter energy vs white noise "
               "(white / measured) |\n|---|---|---|---|---|---|\n";
         const uint32_t blueNs[] = {16, 256};
-        for (const char *pattern : {"independent", "stratified", "poisson", "sobol", "pmj02"})
+        for (const char* pattern : {"independent", "stratified", "poisson", "sobol", "pmj02"})
             for (uint32_t n : blueNs) {
                 std::vector<double> plainSq;
                 for (uint32_t flag : {0u, 1u}) {
@@ -364,10 +370,12 @@ int main(int argc, char **argv) {
               "set title 'Per-pixel error spectrum, Gaussian integrand, 128x128 pixels'\n"
               "set arrow from 0.125, graph 0 to 0.125, graph 1 nohead dt 2\n"
               "sel(p,f,n)=(strcol(1) eq p && $2 == f && $3 == n) ? $5 : 1/0\n"
-              "plot for [p in 'sobol stratified independent pmj02'] for [f in '0 1'] '" << (outDir / "spectrum_blue.csv").string()
-           << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : 'plain')\n";
+              "plot for [p in 'sobol stratified independent pmj02'] for [f in '0 1'] '"
+           << (outDir / "spectrum_blue.csv").string()
+           << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : "
+              "'plain')\n";
         gp.close();
-        for (const char *term : {"pngcairo size 900,600", "svg size 900,600"}) {
+        for (const char* term : {"pngcairo size 900,600", "svg size 900,600"}) {
             const std::string ext = std::string(term).substr(0, 3) == "png" ? "png" : "svg";
             const std::string cmd = "gnuplot -e \"set terminal " + std::string(term) + "; set output '" +
                                     (outDir / ("blue_noise." + ext)).string() + "'\" '" +
@@ -419,7 +427,7 @@ int main(int argc, char **argv) {
                 std::vector<std::vector<double>> perSet(gs.size());
                 std::vector<float> shifted(size_t(n) * dim);
                 for (uint32_t j = 0; j < family->setCount(); ++j) {
-                    const float *base = family->set(j);
+                    const float* base = family->set(j);
                     std::vector<double> acc(gs.size(), 0.0);
                     for (int t = 0; t < shifts; ++t) {
                         float shift[3];
@@ -438,13 +446,14 @@ int main(int argc, char **argv) {
                 }
                 for (size_t gi = 0; gi < gs.size(); ++gi) {
                     const auto [lo, hi] = std::minmax_element(perSet[gi].begin(), perSet[gi].end());
-                    spread << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << family->setCount()
-                           << " | " << fmt(*hi / *lo) << " |\n";
+                    spread << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << family->setCount() << " | "
+                           << fmt(*hi / *lo) << " |\n";
                 }
             }
         }
     }
-    std::cout << "wrote " << outDir << "/{table.md, blue_noise.md, blue_noise.png, poisson_vs_stratified.md, "
-                                       "poisson_spread.md}\n";
+    std::cout << "wrote " << outDir
+              << "/{table.md, blue_noise.md, blue_noise.png, poisson_vs_stratified.md, "
+                 "poisson_spread.md}\n";
     return 0;
 }

@@ -14,7 +14,7 @@ namespace {
 
 enum Generator : int64_t { kPoisson = 0, kPoissonSeed = 1 };
 
-void BM_Generate(benchmark::State &state) {
+void BM_Generate(benchmark::State& state) {
     const auto generator = Generator(state.range(0));
     const int dim = int(state.range(1));
     const auto n = uint32_t(state.range(2));
@@ -26,7 +26,7 @@ void BM_Generate(benchmark::State &state) {
                                                        : stipple::pointsets::generatePoissonSeed(dim, n, seed);
         benchmark::DoNotOptimize(pts.data());
         ++seed;
-        if (measured < 8) {  // rho of the first few sets, off the clock
+        if (measured < 8) { // rho of the first few sets, off the clock
             state.PauseTiming();
             rhoSum += stipple::pointsets::relativeRadius(dim, pts.data(), n);
             ++measured;
@@ -38,13 +38,13 @@ void BM_Generate(benchmark::State &state) {
     state.SetLabel(generator == kPoisson ? "poisson" : "poisson-seed");
 }
 
-void sizes(benchmark::internal::Benchmark *b) {
+void sizes(benchmark::internal::Benchmark* b) {
     for (int64_t generator : {kPoisson, kPoissonSeed})
         for (int64_t dim : {1, 2, 3})
             for (int64_t n : {16, 256, 4096, 100000}) b->Args({generator, dim, n});
 }
 
-}  // namespace
+} // namespace
 
 BENCHMARK(BM_Generate)->Apply(sizes)->Unit(benchmark::kMicrosecond)->ArgNames({"gen", "dim", "N"});
 

@@ -1,8 +1,8 @@
 // pointsets_figure3.cpp — the study's Figure 3 (generation time vs N per pattern, 1D/2D/3D), redone, plus the
 // quality tables and the isotropy figure of shim/POINTSETS.md. One command:
 //
-//     build/release/bin/shim_pointsets_figure3 -o report/figure3          (~2.5 min of CPU; more wall time on a loaded machine)
-//     build/release/bin/shim_pointsets_figure3 -o report/figure3 --quick  (reduced: ~20 s, for a smoke test)
+//     build/release/bin/shim_pointsets_figure3 -o report/figure3          (~2.5 min of CPU; more wall time on a loaded
+//     machine) build/release/bin/shim_pointsets_figure3 -o report/figure3 --quick  (reduced: ~20 s, for a smoke test)
 //
 // Writes into the output directory:
 //   timing.csv      pattern, dim, n, seconds per set (thread CPU time and wall), points/s
@@ -55,9 +55,9 @@ double wallSeconds() {
 
 struct Options {
     fs::path out = "report/figure3";
-    int sets = 1000;         // for the rho table
-    int spectrumSets = 100;  // for the spectrum
-    double minTime = 0.05;   // seconds of CPU per timing cell
+    int sets = 1000;        // for the rho table
+    int spectrumSets = 100; // for the spectrum
+    double minTime = 0.05;  // seconds of CPU per timing cell
     bool quick = false;
 };
 
@@ -78,17 +78,17 @@ struct Sampler {
         if (stipple_sampler_create(&desc, &handle) != STIPPLE_OK) handle = nullptr;
     }
     ~Sampler() { stipple_sampler_release(handle); }
-    Sampler(const Sampler &) = delete;
-    Sampler &operator=(const Sampler &) = delete;
+    Sampler(const Sampler&) = delete;
+    Sampler& operator=(const Sampler&) = delete;
 };
 
 struct Timing {
-    double cpu = 0, wall = 0;  // seconds per set
+    double cpu = 0, wall = 0; // seconds per set
 };
 
 // Repeats `once` until minTime of CPU has passed (at least twice, or once if a single call exceeds 1 s).
-Timing timeIt(const std::function<void(uint64_t)> &once, double minTime) {
-    once(0);  // warm caches and the allocator
+Timing timeIt(const std::function<void(uint64_t)>& once, double minTime) {
+    once(0); // warm caches and the allocator
     double c0 = threadSeconds(), w0 = wallSeconds();
     uint64_t reps = 0;
     double c = 0;
@@ -99,7 +99,7 @@ Timing timeIt(const std::function<void(uint64_t)> &once, double minTime) {
     return {c / double(reps), (wallSeconds() - w0) / double(reps)};
 }
 
-const char *kPatterns[] = {"independent", "stratified", "poisson-seed", "poisson", "poisson-served"};
+const char* kPatterns[] = {"independent", "stratified", "poisson-seed", "poisson", "poisson-served"};
 
 std::vector<uint32_t> timingSizes(bool quick) {
     if (quick) return {16, 256, 4096, 100000};
@@ -107,7 +107,7 @@ std::vector<uint32_t> timingSizes(bool quick) {
 }
 
 // Least-squares slope of log10 t against log10 N.
-double slope(const std::vector<std::pair<double, double>> &nt) {
+double slope(const std::vector<std::pair<double, double>>& nt) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (auto [n, t] : nt) {
         double x = std::log10(n), y = std::log10(t);
@@ -120,34 +120,34 @@ double slope(const std::vector<std::pair<double, double>> &nt) {
     return nt.size() < 2 ? 0.0 : (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
-bool runGnuplot(const fs::path &script) {
+bool runGnuplot(const fs::path& script) {
     std::string cmd = "gnuplot '" + script.string() + "' 2>&1";
     int rc = std::system(cmd.c_str());
     if (rc != 0) std::cerr << "gnuplot failed (" << rc << ") on " << script << "; the CSV files are complete\n";
     return rc == 0;
 }
 
-void writeScript(const fs::path &path, const std::string &body) {
+void writeScript(const fs::path& path, const std::string& body) {
     std::ofstream f(path);
     f << body;
 }
 
-}  // namespace
+} // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
     Options opt;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        auto value = [&](const char *what) -> std::string {
+        auto value = [&](const char* what) -> std::string {
             if (i + 1 >= argc) {
                 std::cerr << "error: " << a << " needs " << what << "\n";
                 std::exit(2);
             }
             return argv[++i];
         };
-        auto number = [&](const char *what, int lo, int hi) {
+        auto number = [&](const char* what, int lo, int hi) {
             std::string v = value(what);
-            char *end = nullptr;
+            char* end = nullptr;
             long x = std::strtol(v.c_str(), &end, 10);
             if (end == v.c_str() || *end != '\0' || x < lo || x > hi) {
                 std::cerr << "error: " << a << " expects " << what << " in [" << lo << ", " << hi << "], got '" << v
@@ -159,10 +159,14 @@ int main(int argc, char **argv) {
         if (a == "--version") {
             std::cout << stipple::versionLine("shim_pointsets_figure3") << "\n";
             return 0;
-        } else if (a == "-o" || a == "--output") opt.out = value("a directory");
-        else if (a == "--sets") opt.sets = number("a set count", 1, 100000);
-        else if (a == "--spectrum-sets") opt.spectrumSets = number("a set count", 1, 10000);
-        else if (a == "--quick") opt.quick = true;
+        } else if (a == "-o" || a == "--output")
+            opt.out = value("a directory");
+        else if (a == "--sets")
+            opt.sets = number("a set count", 1, 100000);
+        else if (a == "--spectrum-sets")
+            opt.spectrumSets = number("a set count", 1, 10000);
+        else if (a == "--quick")
+            opt.quick = true;
         else if (a == "-h" || a == "--help") {
             std::cout << "usage: " << argv[0] << " [-o DIR] [--sets M (1000)] [--spectrum-sets S (100)] [--quick]\n";
             return 0;
@@ -193,23 +197,23 @@ int main(int argc, char **argv) {
     for (int dim = 1; dim <= 3; ++dim)
         for (uint32_t n : timingSizes(opt.quick)) {
             std::vector<float> buffer(size_t(n) * dim);
-            for (const char *pattern : kPatterns) {
+            for (const char* pattern : kPatterns) {
                 std::string p = pattern;
                 Timing t;
                 if (p == "poisson-seed" || p == "poisson") {
                     auto gen = p == "poisson" ? &generatePoisson : &generatePoissonSeed;
                     t = timeIt([&](uint64_t r) { buffer = gen(dim, n, 1000 + r); }, opt.minTime);
                 } else {
-                    uint32_t code = p == "independent" ? STIPPLE_PATTERN_INDEPENDENT
-                                  : p == "stratified"  ? STIPPLE_PATTERN_STRATIFIED
-                                                       : STIPPLE_PATTERN_POISSON;
+                    uint32_t code = p == "independent"  ? STIPPLE_PATTERN_INDEPENDENT
+                                    : p == "stratified" ? STIPPLE_PATTERN_STRATIFIED
+                                                        : STIPPLE_PATTERN_POISSON;
                     Sampler s(code, uint32_t(dim), n, 7);
                     if (!s.handle) {
                         std::cerr << "error: sampler " << p << " dim " << dim << " n " << n << ": "
                                   << stipple_last_error_message() << "\n";
                         return 1;
                     }
-                    if (code == STIPPLE_PATTERN_POISSON) {  // warm the whole family first, timed apart
+                    if (code == STIPPLE_PATTERN_POISSON) { // warm the whole family first, timed apart
                         double c0 = threadSeconds();
                         auto family = stipple::PoissonCache::global().acquire(uint32_t(dim), n);
                         for (uint32_t j = 0; j < family->setCount(); ++j) family->set(j);
@@ -235,10 +239,10 @@ int main(int argc, char **argv) {
     slopes << "pattern,dim,slope_all_n,slope_n_ge_1024\n";
     std::ostringstream slopeTable;
     slopeTable << "| pattern | 1D | 2D | 3D |\n|---|---|---|---|\n";
-    for (const char *pattern : kPatterns) {
+    for (const char* pattern : kPatterns) {
         slopeTable << "| " << pattern;
         for (int dim = 1; dim <= 3; ++dim) {
-            const auto &s = series[{pattern, dim}];
+            const auto& s = series[{pattern, dim}];
             std::vector<std::pair<double, double>> large;
             for (auto nt : s)
                 if (nt.first >= 1024) large.push_back(nt);
@@ -264,16 +268,17 @@ int main(int argc, char **argv) {
     std::ostringstream rhoTable;
     rhoTable << "| dim | N | poisson min | poisson mean | poisson NN mean | poisson-seed min | poisson-seed mean | "
                 "poisson-seed NN mean |\n|---|---|---|---|---|---|---|---|\n";
-    const std::vector<uint32_t> rhoSizes = opt.quick ? std::vector<uint32_t>{16, 256, 4096}
-                                                     : std::vector<uint32_t>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
+    const std::vector<uint32_t> rhoSizes = opt.quick
+                                               ? std::vector<uint32_t>{16, 256, 4096}
+                                               : std::vector<uint32_t>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
     for (int dim = 1; dim <= 3; ++dim)
         for (uint32_t n : rhoSizes) {
             double stats[2][3];
             for (int g = 0; g < 2; ++g) {
                 double mn = 1e9, mean = 0, nn = 0;
                 for (int s = 0; s < opt.sets; ++s) {
-                    std::vector<float> pts = g == 0 ? generatePoisson(dim, n, 0x5e7000 + s)
-                                                    : generatePoissonSeed(dim, n, 0x5e7000 + s);
+                    std::vector<float> pts =
+                        g == 0 ? generatePoisson(dim, n, 0x5e7000 + s) : generatePoissonSeed(dim, n, 0x5e7000 + s);
                     double r = relativeRadius(dim, pts.data(), n);
                     mn = std::min(mn, r);
                     mean += r / opt.sets;
@@ -283,8 +288,8 @@ int main(int argc, char **argv) {
                 stats[g][1] = mean;
                 stats[g][2] = nn;
                 rhoRows.push_back({g == 0 ? "poisson" : "poisson-seed", dim, n, mn, mean, nn});
-                rho << (g == 0 ? "poisson" : "poisson-seed") << "," << dim << "," << n << "," << opt.sets << ","
-                    << mn << "," << mean << "," << nn << "\n";
+                rho << (g == 0 ? "poisson" : "poisson-seed") << "," << dim << "," << n << "," << opt.sets << "," << mn
+                    << "," << mean << "," << nn << "\n";
             }
             char line[256];
             std::snprintf(line, sizeof line, "| %d | %u | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", dim, n,
@@ -301,25 +306,27 @@ int main(int argc, char **argv) {
 
     // ---- 3. spectrum of 2D sets of 1024 points --------------------------------------------------------------
     const uint32_t sn = 1024;
-    const int K = 2 * 32;  // frequencies up to 2 sqrt(N)
+    const int K = 2 * 32; // frequencies up to 2 sqrt(N)
     std::ofstream spec(opt.out / "spectrum.csv");
     spec << "pattern,f_over_sqrt_n,power,anisotropy_db,sets\n";
-    for (const char *pattern : {"independent", "stratified", "poisson-seed", "poisson"}) {
+    for (const char* pattern : {"independent", "stratified", "poisson-seed", "poisson"}) {
         std::string p = pattern;
         PowerSpectrum2D spectrum(K);
         Sampler independent(STIPPLE_PATTERN_INDEPENDENT, 2, sn, 11), stratified(STIPPLE_PATTERN_STRATIFIED, 2, sn, 11);
         std::vector<float> buffer(2 * sn);
         for (int s = 0; s < opt.spectrumSets; ++s) {
-            if (p == "poisson") buffer = generatePoisson(2, sn, 0x5bec + s);
-            else if (p == "poisson-seed") buffer = generatePoissonSeed(2, sn, 0x5bec + s);
+            if (p == "poisson")
+                buffer = generatePoisson(2, sn, 0x5bec + s);
+            else if (p == "poisson-seed")
+                buffer = generatePoissonSeed(2, sn, 0x5bec + s);
             else
                 stipple_sampler_fill_pixel(p == "independent" ? independent.handle : stratified.handle, uint32_t(s), 0,
                                            0, buffer.data(), buffer.size());
             spectrum.add(buffer.data(), sn);
         }
-        for (const auto &ring : spectrum.rings())
-            spec << p << "," << ring.radius / std::sqrt(double(sn)) << "," << ring.mean << "," << ring.anisotropy
-                 << "," << opt.spectrumSets << "\n";
+        for (const auto& ring : spectrum.rings())
+            spec << p << "," << ring.radius / std::sqrt(double(sn)) << "," << ring.mean << "," << ring.anisotropy << ","
+                 << opt.spectrumSets << "\n";
         std::cerr << "spectrum " << p << "\n";
     }
     spec.close();
@@ -330,7 +337,7 @@ int main(int argc, char **argv) {
     {
         std::ofstream dat(timingDat);
         for (int dim = 1; dim <= 3; ++dim)
-            for (const char *pattern : kPatterns) {
+            for (const char* pattern : kPatterns) {
                 dat << "# " << pattern << " " << dim << "D: n cpu_seconds\n";
                 for (auto [n, t] : series[{pattern, dim}]) dat << n << " " << t << "\n";
                 dat << "\n\n";
@@ -351,18 +358,18 @@ int main(int argc, char **argv) {
     }
     plots << "unset multiplot\n";
     std::string fig3 = fig.str();
-    writeScript(opt.out / "figure3.gp",
-                fig3 + "set terminal pngcairo size 1500,500\nset output '" + (opt.out / "figure3.png").string() + "'\n" +
-                    plots.str() + "set terminal svg size 1500,500\nset output '" + (opt.out / "figure3.svg").string() +
-                    "'\n" + plots.str());
+    writeScript(opt.out / "figure3.gp", fig3 + "set terminal pngcairo size 1500,500\nset output '" +
+                                            (opt.out / "figure3.png").string() + "'\n" + plots.str() +
+                                            "set terminal svg size 1500,500\nset output '" +
+                                            (opt.out / "figure3.svg").string() + "'\n" + plots.str());
 
     const std::string rhoDat = (opt.out / "rho.dat").string();
     {
         std::ofstream dat(rhoDat);
         for (int dim = 1; dim <= 3; ++dim)
-            for (const char *g : {"poisson", "poisson-seed"}) {
+            for (const char* g : {"poisson", "poisson-seed"}) {
                 dat << "# " << g << " " << dim << "D: n rho_min rho_mean nn_rho_mean\n";
-                for (const auto &row : rhoRows)
+                for (const auto& row : rhoRows)
                     if (row.dim == dim && row.generator == g)
                         dat << row.n << " " << row.min << " " << row.mean << " " << row.nn << "\n";
                 dat << "\n\n";
@@ -382,9 +389,8 @@ int main(int argc, char **argv) {
         rp << "\n";
     }
     rp << "unset multiplot\n";
-    const std::string rhoHead =
-        "set key bottom left font ',9'\nset logscale x\nset yrange [0.3:1.05]\n"
-        "set xlabel 'N'\nset ylabel 'rho'\nset grid\n";
+    const std::string rhoHead = "set key bottom left font ',9'\nset logscale x\nset yrange [0.3:1.05]\n"
+                                "set xlabel 'N'\nset ylabel 'rho'\nset grid\n";
     writeScript(opt.out / "rho.gp", rhoHead + "set terminal pngcairo size 1500,500\nset output '" +
                                         (opt.out / "rho.png").string() + "'\n" + rp.str() +
                                         "set terminal svg size 1500,500\nset output '" +
@@ -400,11 +406,12 @@ int main(int argc, char **argv) {
         if (col == 4) sp << "set yrange [-30:10]\n";
         sp << "plot ";
         int k = 0;
-        for (const char *pattern : {"independent", "stratified", "poisson-seed", "poisson"})
+        for (const char* pattern : {"independent", "stratified", "poisson-seed", "poisson"})
             sp << (k++ ? ", " : "") << "'" << specCsv << "' using (strcol(1) eq '" << pattern << "' ? $2 : 1/0):" << col
                << " with lines title '" << pattern << "'";
         if (col == 4)
-            sp << ", " << 10.0 * std::log10(1.0 / opt.spectrumSets) << " with lines dt 2 lc 'black' title 'isotropic floor'";
+            sp << ", " << 10.0 * std::log10(1.0 / opt.spectrumSets)
+               << " with lines dt 2 lc 'black' title 'isotropic floor'";
         sp << "\n";
     }
     sp << "unset multiplot\n";
@@ -414,8 +421,8 @@ int main(int argc, char **argv) {
                                              (opt.out / "spectrum.png").string() + "'\n" + sp.str() +
                                              "set terminal svg size 1300,500\nset output '" +
                                              (opt.out / "spectrum.svg").string() + "'\n" + sp.str());
-    bool plotted = runGnuplot(opt.out / "figure3.gp") & runGnuplot(opt.out / "rho.gp") &
-                   runGnuplot(opt.out / "spectrum.gp");
+    bool plotted =
+        runGnuplot(opt.out / "figure3.gp") & runGnuplot(opt.out / "rho.gp") & runGnuplot(opt.out / "spectrum.gp");
 
     // ---- 5. summary -----------------------------------------------------------------------------------------
     std::ostringstream summary;
@@ -432,9 +439,9 @@ int main(int argc, char **argv) {
             std::snprintf(line, sizeof line, "| %d | %u | %.4g | %.4g | %.2f | %.3g |\n", dim, n, a, b, a / b, n / b);
             summary << line;
         }
-    summary << "\n## rho over " << opt.sets << " sets per N\n\n" << rhoTable.str()
-            << "\nFigures: figure3.png, rho.png, spectrum.png (and .svg)" << (plotted ? "" : " — gnuplot failed")
-            << ".\n";
+    summary << "\n## rho over " << opt.sets << " sets per N\n\n"
+            << rhoTable.str() << "\nFigures: figure3.png, rho.png, spectrum.png (and .svg)"
+            << (plotted ? "" : " — gnuplot failed") << ".\n";
     std::ofstream(opt.out / "summary.md") << summary.str();
     std::cout << summary.str();
     return plotted ? 0 : 1;

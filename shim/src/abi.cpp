@@ -18,207 +18,208 @@ namespace {
 
 constexpr uint32_t kVersionPatch = 0;
 constexpr const char* kPatternNames[STIPPLE_PATTERN_COUNT] = {"independent",  "stratified", "poisson",
-                                                               "poisson-seed", "sobol",      "pmj02"};
+                                                              "poisson-seed", "sobol",      "pmj02"};
 
 const stipple::Sampler& checkedSampler(stipple_sampler sampler) {
-  requireNonNull(sampler, "sampler");
-  return *stipple::fromHandle(sampler);
+    requireNonNull(sampler, "sampler");
+    return *stipple::fromHandle(sampler);
 }
 
 void checkDimension(const stipple::Sampler& sampler, uint32_t dimension) {
-  if (dimension >= sampler.dimensionCount())
-    throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                "dimension is " + std::to_string(dimension) + "; expected 0.." +
-                    std::to_string(sampler.dimensionCount() - 1) +
-                    " (the declared layout; past it use stipple_sampler_sample_independent)");
+    if (dimension >= sampler.dimensionCount())
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    "dimension is " + std::to_string(dimension) + "; expected 0.." +
+                        std::to_string(sampler.dimensionCount() - 1) +
+                        " (the declared layout; past it use stipple_sampler_sample_independent)");
 }
 
 void checkCapacity(size_t outCount, size_t needed) {
-  if (outCount < needed)
-    throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                "out_count is " + std::to_string(outCount) + "; expected at least " + std::to_string(needed));
+    if (outCount < needed)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    "out_count is " + std::to_string(outCount) + "; expected at least " + std::to_string(needed));
 }
 
 // Output structs: struct_size is set by the caller; we fill what we know and zero the rest of its struct.
 template <typename Info>
 void prepareOutput(Info* info, const char* argument) {
-  requireNonNull(info, argument);
-  if (info->struct_size < sizeof(Info))
-    throw Error(STIPPLE_ERROR_STRUCT_SIZE, std::string(argument) + "->struct_size is " +
-                                               std::to_string(info->struct_size) + "; expected at least " +
-                                               std::to_string(sizeof(Info)));
-  const uint32_t size = info->struct_size;
-  std::memset(static_cast<void*>(info), 0, size);
-  info->struct_size = size;
+    requireNonNull(info, argument);
+    if (info->struct_size < sizeof(Info))
+        throw Error(STIPPLE_ERROR_STRUCT_SIZE, std::string(argument) + "->struct_size is " +
+                                                   std::to_string(info->struct_size) + "; expected at least " +
+                                                   std::to_string(sizeof(Info)));
+    const uint32_t size = info->struct_size;
+    std::memset(static_cast<void*>(info), 0, size);
+    info->struct_size = size;
 }
 
-}  // namespace
+} // namespace
 
 extern "C" {
 
 STIPPLE_API const char* stipple_last_error_message(void) { return stipple::lastErrorMessage(); }
 
 STIPPLE_API stipple_status stipple_get_version(uint32_t* major, uint32_t* minor, uint32_t* patch) {
-  return callGuarded(__func__, [&] {
-    requireNonNull(major, "major");
-    requireNonNull(minor, "minor");
-    requireNonNull(patch, "patch");
-    *major = STIPPLE_ABI_MAJOR;
-    *minor = STIPPLE_ABI_MINOR;
-    *patch = kVersionPatch;
-  });
+    return callGuarded(__func__, [&] {
+        requireNonNull(major, "major");
+        requireNonNull(minor, "minor");
+        requireNonNull(patch, "patch");
+        *major = STIPPLE_ABI_MAJOR;
+        *minor = STIPPLE_ABI_MINOR;
+        *patch = kVersionPatch;
+    });
 }
 
 STIPPLE_API stipple_status stipple_pattern_from_name(const char* name, uint32_t* out_pattern) {
-  return callGuarded(__func__, [&] {
-    requireNonNull(name, "name");
-    requireNonNull(out_pattern, "out_pattern");
-    for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p)
-      if (std::strcmp(name, kPatternNames[p]) == 0) {
-        *out_pattern = p;
-        return;
-      }
-    const size_t length = strnlen(name, 64);
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                "name is \"" + std::string(name, length) + (length == 64 ? "...\"" : "\"") +
-                    "; expected \"independent\", \"stratified\", \"poisson\", \"poisson-seed\", \"sobol\" or \"pmj02\"");
-  });
+    return callGuarded(__func__, [&] {
+        requireNonNull(name, "name");
+        requireNonNull(out_pattern, "out_pattern");
+        for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p)
+            if (std::strcmp(name, kPatternNames[p]) == 0) {
+                *out_pattern = p;
+                return;
+            }
+        const size_t length = strnlen(name, 64);
+        throw Error(
+            STIPPLE_ERROR_INVALID_ARGUMENT,
+            "name is \"" + std::string(name, length) + (length == 64 ? "...\"" : "\"") +
+                "; expected \"independent\", \"stratified\", \"poisson\", \"poisson-seed\", \"sobol\" or \"pmj02\"");
+    });
 }
 
 STIPPLE_API stipple_status stipple_pattern_name(uint32_t pattern, const char** out_name) {
-  return callGuarded(__func__, [&] {
-    requireNonNull(out_name, "out_name");
-    if (pattern >= STIPPLE_PATTERN_COUNT)
-      throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                  "pattern is " + std::to_string(pattern) + "; expected 0.." + std::to_string(STIPPLE_PATTERN_COUNT - 1));
-    *out_name = kPatternNames[pattern];
-  });
+    return callGuarded(__func__, [&] {
+        requireNonNull(out_name, "out_name");
+        if (pattern >= STIPPLE_PATTERN_COUNT)
+            throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is " + std::to_string(pattern) + "; expected 0.." +
+                                                            std::to_string(STIPPLE_PATTERN_COUNT - 1));
+        *out_name = kPatternNames[pattern];
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_create(const stipple_sampler_desc* desc, stipple_sampler* out_sampler) {
-  return callGuarded(__func__, [&] {
-    requireNonNull(out_sampler, "out_sampler");
-    *out_sampler = nullptr;
-    requireNonNull(desc, "desc");
-    *out_sampler = stipple::toHandle(stipple::createSampler(*desc));
-  });
+    return callGuarded(__func__, [&] {
+        requireNonNull(out_sampler, "out_sampler");
+        *out_sampler = nullptr;
+        requireNonNull(desc, "desc");
+        *out_sampler = stipple::toHandle(stipple::createSampler(*desc));
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_release(stipple_sampler sampler) {
-  return callGuarded(__func__, [&] { delete stipple::fromHandle(sampler); });
+    return callGuarded(__func__, [&] { delete stipple::fromHandle(sampler); });
 }
 
 STIPPLE_API stipple_status stipple_sampler_get_info(stipple_sampler sampler, stipple_sampler_info* out_info) {
-  return callGuarded(__func__, [&] {
-    const stipple::Sampler& s = checkedSampler(sampler);
-    prepareOutput(out_info, "out_info");
-    out_info->pattern = s.pattern();
-    out_info->samples_per_pixel = s.samplesPerPixel();
-    out_info->dimension_count = s.dimensionCount();
-    out_info->seed = s.seed();
-  });
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        prepareOutput(out_info, "out_info");
+        out_info->pattern = s.pattern();
+        out_info->samples_per_pixel = s.samplesPerPixel();
+        out_info->dimension_count = s.dimensionCount();
+        out_info->seed = s.seed();
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_get_dimension_info(stipple_sampler sampler, uint32_t dimension,
-                                                             stipple_dimension_info* out_info) {
-  return callGuarded(__func__, [&] {
-    const stipple::Sampler& s = checkedSampler(sampler);
-    checkDimension(s, dimension);
-    prepareOutput(out_info, "out_info");
-    const stipple::Dimension& dim = s.dimension(dimension);
-    out_info->arity = dim.arity;
-    out_info->count = dim.count;
-    out_info->floats_per_pixel = dim.floatsPerPixel();
-    out_info->name = dim.name.c_str();
-    if (s.pattern() == STIPPLE_PATTERN_STRATIFIED)
-      for (uint32_t c = 0; c < dim.arity; ++c) out_info->strata[c] = dim.grid.axis[c];
-  });
+                                                              stipple_dimension_info* out_info) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkDimension(s, dimension);
+        prepareOutput(out_info, "out_info");
+        const stipple::Dimension& dim = s.dimension(dimension);
+        out_info->arity = dim.arity;
+        out_info->count = dim.count;
+        out_info->floats_per_pixel = dim.floatsPerPixel();
+        out_info->name = dim.name.c_str();
+        if (s.pattern() == STIPPLE_PATTERN_STRATIFIED)
+            for (uint32_t c = 0; c < dim.arity; ++c) out_info->strata[c] = dim.grid.axis[c];
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_find_dimension(stipple_sampler sampler, const char* name,
-                                                         uint32_t* out_dimension) {
-  return callGuarded(__func__, [&] {
-    const stipple::Sampler& s = checkedSampler(sampler);
-    requireNonNull(name, "name");
-    requireNonNull(out_dimension, "out_dimension");
-    for (uint32_t d = 0; d < s.dimensionCount(); ++d)
-      if (s.dimension(d).name == name) {
-        *out_dimension = d;
-        return;
-      }
-    const size_t length = strnlen(name, 64);
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                "name is \"" + std::string(name, length) + (length == 64 ? "...\"" : "\"") +
-                    "; expected the name of one of the sampler's " + std::to_string(s.dimensionCount()) +
-                    " dimensions");
-  });
+                                                          uint32_t* out_dimension) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        requireNonNull(name, "name");
+        requireNonNull(out_dimension, "out_dimension");
+        for (uint32_t d = 0; d < s.dimensionCount(); ++d)
+            if (s.dimension(d).name == name) {
+                *out_dimension = d;
+                return;
+            }
+        const size_t length = strnlen(name, 64);
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "name is \"" + std::string(name, length) +
+                                                        (length == 64 ? "...\"" : "\"") +
+                                                        "; expected the name of one of the sampler's " +
+                                                        std::to_string(s.dimensionCount()) + " dimensions");
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_fill_pixel(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
-                                                     uint32_t dimension, float* out, size_t out_count) {
-  return callGuarded(__func__, [&] {
-    const stipple::Sampler& s = checkedSampler(sampler);
-    checkDimension(s, dimension);
-    requireNonNull(out, "out");
-    checkCapacity(out_count, s.dimension(dimension).floatsPerPixel());
-    s.fillPixel(pixel_x, pixel_y, dimension, out);
-  });
+                                                      uint32_t dimension, float* out, size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkDimension(s, dimension);
+        requireNonNull(out, "out");
+        checkCapacity(out_count, s.dimension(dimension).floatsPerPixel());
+        s.fillPixel(pixel_x, pixel_y, dimension, out);
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
-                                                 uint32_t sample_index, uint32_t dimension, float* out,
-                                                 size_t out_count) {
-  return callGuarded(__func__, [&] {
-    const stipple::Sampler& s = checkedSampler(sampler);
-    checkDimension(s, dimension);
-    if (sample_index >= s.samplesPerPixel())
-      throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_index is " + std::to_string(sample_index) + "; expected 0.." +
-                                                  std::to_string(s.samplesPerPixel() - 1));
-    requireNonNull(out, "out");
-    checkCapacity(out_count, s.dimension(dimension).floatsPerSample());
-    s.sample(pixel_x, pixel_y, sample_index, dimension, out);
-  });
+                                                  uint32_t sample_index, uint32_t dimension, float* out,
+                                                  size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkDimension(s, dimension);
+        if (sample_index >= s.samplesPerPixel())
+            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_index is " + std::to_string(sample_index) +
+                                                        "; expected 0.." + std::to_string(s.samplesPerPixel() - 1));
+        requireNonNull(out, "out");
+        checkCapacity(out_count, s.dimension(dimension).floatsPerSample());
+        s.sample(pixel_x, pixel_y, sample_index, dimension, out);
+    });
 }
 
 STIPPLE_API stipple_status stipple_sampler_sample_independent(stipple_sampler sampler, uint32_t pixel_x,
-                                                             uint32_t pixel_y, uint32_t sample_index, uint32_t stream,
-                                                             float* out, size_t out_count) {
-  return callGuarded(__func__, [&] {
-    const stipple::Sampler& s = checkedSampler(sampler);
-    requireNonNull(out, "out");
-    if (out_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "out_count is 0; expected at least 1");
-    s.sampleIndependent(pixel_x, pixel_y, sample_index, stream, out, out_count);
-  });
+                                                              uint32_t pixel_y, uint32_t sample_index, uint32_t stream,
+                                                              float* out, size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        requireNonNull(out, "out");
+        if (out_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "out_count is 0; expected at least 1");
+        s.sampleIndependent(pixel_x, pixel_y, sample_index, stream, out, out_count);
+    });
 }
 
 STIPPLE_API stipple_status stipple_get_api(uint32_t abi_major, const stipple_api** out_api) {
-  static const stipple_api kApi = {
-      sizeof(stipple_api),
-      STIPPLE_ABI_MAJOR,
-      STIPPLE_ABI_MINOR,
-      0,
-      &stipple_last_error_message,
-      &stipple_get_version,
-      &stipple_pattern_from_name,
-      &stipple_pattern_name,
-      &stipple_sampler_create,
-      &stipple_sampler_release,
-      &stipple_sampler_get_info,
-      &stipple_sampler_get_dimension_info,
-      &stipple_sampler_find_dimension,
-      &stipple_sampler_fill_pixel,
-      &stipple_sampler_sample,
-      &stipple_sampler_sample_independent,
-  };
-  return callGuarded(__func__, [&] {
-    requireNonNull(out_api, "out_api");
-    *out_api = nullptr;
-    if (abi_major != STIPPLE_ABI_MAJOR)
-      throw Error(STIPPLE_ERROR_ABI_VERSION, "abi_major is " + std::to_string(abi_major) +
-                                                 "; this library implements ABI major version " +
-                                                 std::to_string(STIPPLE_ABI_MAJOR));
-    *out_api = &kApi;
-  });
+    static const stipple_api kApi = {
+        sizeof(stipple_api),
+        STIPPLE_ABI_MAJOR,
+        STIPPLE_ABI_MINOR,
+        0,
+        &stipple_last_error_message,
+        &stipple_get_version,
+        &stipple_pattern_from_name,
+        &stipple_pattern_name,
+        &stipple_sampler_create,
+        &stipple_sampler_release,
+        &stipple_sampler_get_info,
+        &stipple_sampler_get_dimension_info,
+        &stipple_sampler_find_dimension,
+        &stipple_sampler_fill_pixel,
+        &stipple_sampler_sample,
+        &stipple_sampler_sample_independent,
+    };
+    return callGuarded(__func__, [&] {
+        requireNonNull(out_api, "out_api");
+        *out_api = nullptr;
+        if (abi_major != STIPPLE_ABI_MAJOR)
+            throw Error(STIPPLE_ERROR_ABI_VERSION, "abi_major is " + std::to_string(abi_major) +
+                                                       "; this library implements ABI major version " +
+                                                       std::to_string(STIPPLE_ABI_MAJOR));
+        *out_api = &kApi;
+    });
 }
 
-}  // extern "C"
+} // extern "C"

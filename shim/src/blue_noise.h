@@ -26,21 +26,21 @@
 
 namespace stipple {
 
-constexpr uint32_t kBlueNoiseMaskLog2 = 6;  // 64 x 64
+constexpr uint32_t kBlueNoiseMaskLog2 = 6; // 64 x 64
 
 // The void-and-cluster mask: kBlueNoiseMaskSize^2 values (i + 0.5) / size^2, each rank once, row-major.
 const float* blueNoiseMask();
 
-constexpr uint32_t kCrossPixelLevels = 6;  // tiles of 64 x 64 pixels
+constexpr uint32_t kCrossPixelLevels = 6; // tiles of 64 x 64 pixels
 
 // Where pixel (x, y) puts its point inside a stratum shared by the pixels of its tile.
 struct CrossPixelStrata {
-  uint64_t tileKey;  // hashed from (seed, pattern, tile, dimension)
-  uint32_t pixelX, pixelY;
-  // The pixel's sub-cell of the stratum with this id: a Morton index in [0, 4^T), digits permuted per stratum.
-  uint32_t subcell(uint64_t stratum) const;
-  // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell.
-  void place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const;
+    uint64_t tileKey; // hashed from (seed, pattern, tile, dimension)
+    uint32_t pixelX, pixelY;
+    // The pixel's sub-cell of the stratum with this id: a Morton index in [0, 4^T), digits permuted per stratum.
+    uint32_t subcell(uint64_t stratum) const;
+    // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell.
+    void place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const;
 };
 
 // The sobol set of pixel (x, y) for a dimension: dimensionKey is hashed from (seed, dimension) (the tile is
@@ -54,4 +54,4 @@ void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t
 // x + shift wrapped into [0, 1) for count points of `arity` floats.
 void applyToroidalShift(const float* shift, uint32_t arity, size_t count, float* values);
 
-}  // namespace stipple
+} // namespace stipple

@@ -12,17 +12,17 @@
 namespace stipple {
 
 struct Dimension {
-  uint32_t arity = 1;     // floats per value
-  uint32_t count = 1;     // k values per pixel sample
-  uint32_t setSize = 1;   // M = k * N points in the pixel's set
-  std::string name;
-  StrataGrid grid;                                // stratified only
-  std::shared_ptr<const PoissonFamily> poisson;  // poisson only
-  uint32_t log2Length = 0;                        // sobol, pmj02: L = 2^log2Length is the least power of two >= M
-  std::shared_ptr<const Pmj02Family> pmj02;       // pmj02 only
+    uint32_t arity = 1;   // floats per value
+    uint32_t count = 1;   // k values per pixel sample
+    uint32_t setSize = 1; // M = k * N points in the pixel's set
+    std::string name;
+    StrataGrid grid;                              // stratified only
+    std::shared_ptr<const PoissonFamily> poisson; // poisson only
+    uint32_t log2Length = 0;                      // sobol, pmj02: L = 2^log2Length is the least power of two >= M
+    std::shared_ptr<const Pmj02Family> pmj02;     // pmj02 only
 
-  uint32_t floatsPerPixel() const { return setSize * arity; }
-  uint32_t floatsPerSample() const { return count * arity; }
+    uint32_t floatsPerPixel() const { return setSize * arity; }
+    uint32_t floatsPerSample() const { return count * arity; }
 };
 
-}  // namespace stipple
+} // namespace stipple

@@ -13,12 +13,12 @@
 namespace stipple {
 
 class Error : public std::runtime_error {
- public:
-  Error(stipple_status status, const std::string& message) : std::runtime_error(message), status_(status) {}
-  stipple_status status() const { return status_; }
+public:
+    Error(stipple_status status, const std::string& message) : std::runtime_error(message), status_(status) {}
+    stipple_status status() const { return status_; }
 
- private:
-  stipple_status status_;
+private:
+    stipple_status status_;
 };
 
 // Stores the calling thread's message (truncated to a fixed buffer: recording an error never allocates).
@@ -28,27 +28,28 @@ const char* lastErrorMessage() noexcept;
 // Runs body(); maps Error / std::bad_alloc / anything else to a status and records the message.
 template <typename Body>
 stipple_status callGuarded(const char* function, Body&& body) noexcept {
-  try {
-    body();
-    return STIPPLE_OK;
-  } catch (const Error& e) {
-    setLastError(function, e.what());
-    return e.status();
-  } catch (const std::bad_alloc&) {
-    setLastError(function, "out of memory");
-    return STIPPLE_ERROR_OUT_OF_MEMORY;
-  } catch (const std::exception& e) {
-    setLastError(function, e.what());
-    return STIPPLE_ERROR_INTERNAL;
-  } catch (...) {
-    setLastError(function, "unknown internal exception");
-    return STIPPLE_ERROR_INTERNAL;
-  }
+    try {
+        body();
+        return STIPPLE_OK;
+    } catch (const Error& e) {
+        setLastError(function, e.what());
+        return e.status();
+    } catch (const std::bad_alloc&) {
+        setLastError(function, "out of memory");
+        return STIPPLE_ERROR_OUT_OF_MEMORY;
+    } catch (const std::exception& e) {
+        setLastError(function, e.what());
+        return STIPPLE_ERROR_INTERNAL;
+    } catch (...) {
+        setLastError(function, "unknown internal exception");
+        return STIPPLE_ERROR_INTERNAL;
+    }
 }
 
 // Argument checks used by the ABI layer: each throws Error with a message naming the argument.
 inline void requireNonNull(const void* pointer, const char* argument) {
-  if (!pointer) throw Error(STIPPLE_ERROR_NULL_ARGUMENT, std::string(argument) + " is NULL; expected a valid pointer");
+    if (!pointer)
+        throw Error(STIPPLE_ERROR_NULL_ARGUMENT, std::string(argument) + " is NULL; expected a valid pointer");
 }
 
-}  // namespace stipple
+} // namespace stipple

@@ -10,24 +10,24 @@
 namespace stipple {
 
 class FastDivider {
- public:
-  static constexpr uint32_t kNumeratorBits = 22;
+public:
+    static constexpr uint32_t kNumeratorBits = 22;
 
-  constexpr FastDivider() = default;
-  explicit constexpr FastDivider(uint32_t divisor) : divisor_(divisor) {
-    uint32_t log2Ceil = 0;
-    while ((uint64_t(1) << log2Ceil) < divisor) ++log2Ceil;
-    shift_ = kNumeratorBits + log2Ceil;
-    magic_ = ((uint64_t(1) << shift_) + divisor - 1) / divisor;
-  }
+    constexpr FastDivider() = default;
+    explicit constexpr FastDivider(uint32_t divisor) : divisor_(divisor) {
+        uint32_t log2Ceil = 0;
+        while ((uint64_t(1) << log2Ceil) < divisor) ++log2Ceil;
+        shift_ = kNumeratorBits + log2Ceil;
+        magic_ = ((uint64_t(1) << shift_) + divisor - 1) / divisor;
+    }
 
-  constexpr uint32_t divisor() const { return divisor_; }
-  constexpr uint32_t divide(uint32_t n) const { return static_cast<uint32_t>((n * magic_) >> shift_); }
+    constexpr uint32_t divisor() const { return divisor_; }
+    constexpr uint32_t divide(uint32_t n) const { return static_cast<uint32_t>((n * magic_) >> shift_); }
 
- private:
-  uint64_t magic_ = uint64_t(1) << kNumeratorBits;
-  uint32_t shift_ = kNumeratorBits;
-  uint32_t divisor_ = 1;
+private:
+    uint64_t magic_ = uint64_t(1) << kNumeratorBits;
+    uint32_t shift_ = kNumeratorBits;
+    uint32_t divisor_ = 1;
 };
 
-}  // namespace stipple
+} // namespace stipple

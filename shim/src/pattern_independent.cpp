@@ -8,24 +8,24 @@
 namespace stipple {
 
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
-  const uint64_t first = uint64_t(p) * dim.arity;
-  if (!blue) {
-    for (uint32_t c = 0; c < dim.arity; ++c) out[c] = unitFloat(hashAt(key, first + c));
-    return;
-  }
-  uint32_t bits[3];
-  for (uint32_t c = 0; c < dim.arity; ++c) bits[c] = static_cast<uint32_t>(hashAt(key, first + c) >> 32);
-  blue->place(p, dim.arity, bits);
-  for (uint32_t c = 0; c < dim.arity; ++c) out[c] = static_cast<float>(bits[c] >> 8) * 0x1p-24f;
+    const uint64_t first = uint64_t(p) * dim.arity;
+    if (!blue) {
+        for (uint32_t c = 0; c < dim.arity; ++c) out[c] = unitFloat(hashAt(key, first + c));
+        return;
+    }
+    uint32_t bits[3];
+    for (uint32_t c = 0; c < dim.arity; ++c) bits[c] = static_cast<uint32_t>(hashAt(key, first + c) >> 32);
+    blue->place(p, dim.arity, bits);
+    for (uint32_t c = 0; c < dim.arity; ++c) out[c] = static_cast<float>(bits[c] >> 8) * 0x1p-24f;
 }
 
 void fillIndependent(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue) {
-  if (!blue) {
-    const uint64_t n = uint64_t(dim.setSize) * dim.arity;
-    for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, i));
-    return;
-  }
-  for (uint32_t p = 0; p < dim.setSize; ++p) pointIndependent(key, dim, p, out + size_t(p) * dim.arity, blue);
+    if (!blue) {
+        const uint64_t n = uint64_t(dim.setSize) * dim.arity;
+        for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, i));
+        return;
+    }
+    for (uint32_t p = 0; p < dim.setSize; ++p) pointIndependent(key, dim, p, out + size_t(p) * dim.arity, blue);
 }
 
-}  // namespace stipple
+} // namespace stipple

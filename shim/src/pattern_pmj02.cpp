@@ -20,52 +20,52 @@ namespace stipple {
 namespace {
 
 struct Pmj02Set {
-  uint32_t sequence, zSequence;
-  uint32_t indexSeed, zIndexSeed;
-  uint32_t scramble[3];
+    uint32_t sequence, zSequence;
+    uint32_t indexSeed, zIndexSeed;
+    uint32_t scramble[3];
 
-  Pmj02Set(uint64_t key, const Pmj02Family& family) {
-    const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
-    sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
-    // A different sequence for z: the same one would tie z to x.
-    zSequence = (sequence + 1 + static_cast<uint32_t>(h0 % (family.setCount() - 1))) % family.setCount();
-    indexSeed = static_cast<uint32_t>(h1);
-    zIndexSeed = static_cast<uint32_t>(h1 >> 32);
-    scramble[0] = static_cast<uint32_t>(h2);
-    scramble[1] = static_cast<uint32_t>(h2 >> 32);
-    scramble[2] = static_cast<uint32_t>(hashAt(key, 3));
-  }
+    Pmj02Set(uint64_t key, const Pmj02Family& family) {
+        const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
+        sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
+        // A different sequence for z: the same one would tie z to x.
+        zSequence = (sequence + 1 + static_cast<uint32_t>(h0 % (family.setCount() - 1))) % family.setCount();
+        indexSeed = static_cast<uint32_t>(h1);
+        zIndexSeed = static_cast<uint32_t>(h1 >> 32);
+        scramble[0] = static_cast<uint32_t>(h2);
+        scramble[1] = static_cast<uint32_t>(h2 >> 32);
+        scramble[2] = static_cast<uint32_t>(hashAt(key, 3));
+    }
 };
 
 // Keeps octaves in place, Owen-scrambles the order inside each.
 inline uint32_t octaveShuffle(uint32_t i, uint32_t seed) {
-  if (i < 2) return i;
-  const uint32_t octave = std::bit_floor(i);
-  return octave | (nestedUniformScramble(i - octave, seed ^ octave) & (octave - 1));
+    if (i < 2) return i;
+    const uint32_t octave = std::bit_floor(i);
+    return octave | (nestedUniformScramble(i - octave, seed ^ octave) & (octave - 1));
 }
 
 inline void pmj02Point(const Pmj02Set& set, const Pmj02Family& family, uint32_t arity, uint32_t r, float* out) {
-  const FixedPoint2& xy = family.sequence(set.sequence)[octaveShuffle(r, set.indexSeed)];
-  out[0] = fixedToUnitFloat(nestedUniformScramble(xy.x, set.scramble[0]));
-  if (arity == 1) return;
-  out[1] = fixedToUnitFloat(nestedUniformScramble(xy.y, set.scramble[1]));
-  if (arity == 2) return;
-  const FixedPoint2& z = family.sequence(set.zSequence)[octaveShuffle(r, set.zIndexSeed)];
-  out[2] = fixedToUnitFloat(nestedUniformScramble(z.x, set.scramble[2]));
+    const FixedPoint2& xy = family.sequence(set.sequence)[octaveShuffle(r, set.indexSeed)];
+    out[0] = fixedToUnitFloat(nestedUniformScramble(xy.x, set.scramble[0]));
+    if (arity == 1) return;
+    out[1] = fixedToUnitFloat(nestedUniformScramble(xy.y, set.scramble[1]));
+    if (arity == 2) return;
+    const FixedPoint2& z = family.sequence(set.zSequence)[octaveShuffle(r, set.zIndexSeed)];
+    out[2] = fixedToUnitFloat(nestedUniformScramble(z.x, set.scramble[2]));
 }
 
-}  // namespace
+} // namespace
 
 void fillPmj02(uint64_t key, const Dimension& dim, float* out) {
-  const Pmj02Family& family = *dim.pmj02;
-  const Pmj02Set set(hashCombine(key, 0), family);
-  for (uint32_t p = 0; p < dim.setSize; ++p) pmj02Point(set, family, dim.arity, p, out + size_t(p) * dim.arity);
+    const Pmj02Family& family = *dim.pmj02;
+    const Pmj02Set set(hashCombine(key, 0), family);
+    for (uint32_t p = 0; p < dim.setSize; ++p) pmj02Point(set, family, dim.arity, p, out + size_t(p) * dim.arity);
 }
 
 void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
-  const Pmj02Family& family = *dim.pmj02;
-  const uint32_t b = p / dim.setSize;
-  pmj02Point(Pmj02Set(hashCombine(key, b), family), family, dim.arity, p - b * dim.setSize, out);
+    const Pmj02Family& family = *dim.pmj02;
+    const uint32_t b = p / dim.setSize;
+    pmj02Point(Pmj02Set(hashCombine(key, b), family), family, dim.arity, p - b * dim.setSize, out);
 }
 
-}  // namespace stipple
+} // namespace stipple

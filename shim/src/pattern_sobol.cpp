@@ -21,31 +21,31 @@ namespace stipple {
 namespace {
 
 inline void sobolPoint(const SobolSet& set, const Dimension& dim, uint32_t p, float* out) {
-  const uint32_t b = p / dim.setSize, r = p - b * dim.setSize;
-  const uint32_t lowMask = dim.log2Length == 32 ? ~0u : (1u << dim.log2Length) - 1u;
-  const uint32_t block = set.blockBase + b * set.blockStride;
-  const uint32_t index = (dim.log2Length >= 32 ? 0u : block << dim.log2Length) |
-                         (nestedUniformScramble(r, set.indexSeed) & lowMask);
-  for (uint32_t c = 0; c < dim.arity; ++c)
-    out[c] = fixedToUnitFloat(nestedUniformScramble(sobolSample(index, c), set.scramble[c]));
+    const uint32_t b = p / dim.setSize, r = p - b * dim.setSize;
+    const uint32_t lowMask = dim.log2Length == 32 ? ~0u : (1u << dim.log2Length) - 1u;
+    const uint32_t block = set.blockBase + b * set.blockStride;
+    const uint32_t index =
+        (dim.log2Length >= 32 ? 0u : block << dim.log2Length) | (nestedUniformScramble(r, set.indexSeed) & lowMask);
+    for (uint32_t c = 0; c < dim.arity; ++c)
+        out[c] = fixedToUnitFloat(nestedUniformScramble(sobolSample(index, c), set.scramble[c]));
 }
 
-}  // namespace
+} // namespace
 
 SobolSet SobolSet::perPixel(uint64_t key) {
-  SobolSet set;
-  const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1);
-  set.indexSeed = static_cast<uint32_t>(h0);
-  set.scramble[0] = static_cast<uint32_t>(h0 >> 32);
-  set.scramble[1] = static_cast<uint32_t>(h1);
-  set.scramble[2] = static_cast<uint32_t>(h1 >> 32);
-  return set;
+    SobolSet set;
+    const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1);
+    set.indexSeed = static_cast<uint32_t>(h0);
+    set.scramble[0] = static_cast<uint32_t>(h0 >> 32);
+    set.scramble[1] = static_cast<uint32_t>(h1);
+    set.scramble[2] = static_cast<uint32_t>(h1 >> 32);
+    return set;
 }
 
 void fillSobol(const SobolSet& set, const Dimension& dim, float* out) {
-  for (uint32_t p = 0; p < dim.setSize; ++p) sobolPoint(set, dim, p, out + size_t(p) * dim.arity);
+    for (uint32_t p = 0; p < dim.setSize; ++p) sobolPoint(set, dim, p, out + size_t(p) * dim.arity);
 }
 
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out) { sobolPoint(set, dim, p, out); }
 
-}  // namespace stipple
+} // namespace stipple

@@ -12,8 +12,7 @@
 
 namespace stipple {
 
-struct CrossPixelStrata;  // blue_noise.h: with the blue-noise flag, stratified and independent take one
-
+struct CrossPixelStrata; // blue_noise.h: with the blue-noise flag, stratified and independent take one
 
 void fillIndependent(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue = nullptr);
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out,
@@ -33,11 +32,11 @@ void fillPoissonSeed(uint64_t key, const Dimension& dim, float* out);
 // sobol: the randomisation of one set (pattern_sobol.cpp). perPixel is the plain pattern; the blue-noise
 // variant (blue_noise.h) shares the Owen scrambling across a tile of pixels and gives each pixel its own block.
 struct SobolSet {
-  uint32_t indexSeed = 0;
-  uint32_t scramble[3] = {0, 0, 0};
-  uint32_t blockBase = 0;    // Sobol' block of the set's first M points
-  uint32_t blockStride = 1;  // blocks between the set's block b and b + 1 (points past the set)
-  static SobolSet perPixel(uint64_t key);
+    uint32_t indexSeed = 0;
+    uint32_t scramble[3] = {0, 0, 0};
+    uint32_t blockBase = 0;   // Sobol' block of the set's first M points
+    uint32_t blockStride = 1; // blocks between the set's block b and b + 1 (points past the set)
+    static SobolSet perPixel(uint64_t key);
 };
 void fillSobol(const SobolSet& set, const Dimension& dim, float* out);
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out);
@@ -45,4 +44,4 @@ void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* ou
 void fillPmj02(uint64_t key, const Dimension& dim, float* out);
 void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
-}  // namespace stipple
+} // namespace stipple

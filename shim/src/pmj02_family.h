@@ -16,29 +16,29 @@
 namespace stipple {
 
 class Pmj02Family {
- public:
-  // Longest sequence served: generation is ~0.2 s at 2^16 points and grows faster than linearly.
-  static constexpr uint32_t kMaxLog2Length = 16;
-  // Sequences per family: as many as fit in 2 MiB, between 2 and 32.
-  static uint32_t setCountFor(uint32_t log2Length);
+public:
+    // Longest sequence served: generation is ~0.2 s at 2^16 points and grows faster than linearly.
+    static constexpr uint32_t kMaxLog2Length = 16;
+    // Sequences per family: as many as fit in 2 MiB, between 2 and 32.
+    static uint32_t setCountFor(uint32_t log2Length);
 
-  Pmj02Family(uint32_t log2Length, uint32_t setCount);
+    Pmj02Family(uint32_t log2Length, uint32_t setCount);
 
-  uint32_t log2Length() const { return log2Length_; }
-  uint32_t setCount() const { return setCount_; }
-  const FixedPoint2* sequence(uint32_t j) const;
+    uint32_t log2Length() const { return log2Length_; }
+    uint32_t setCount() const { return setCount_; }
+    const FixedPoint2* sequence(uint32_t j) const;
 
-  // The shared family for this length (created on first request).
-  static std::shared_ptr<const Pmj02Family> acquire(uint32_t log2Length);
+    // The shared family for this length (created on first request).
+    static std::shared_ptr<const Pmj02Family> acquire(uint32_t log2Length);
 
- private:
-  struct Slot {
-    std::mutex mutex;
-    std::atomic<const FixedPoint2*> ready{nullptr};
-    std::vector<FixedPoint2> points;
-  };
-  uint32_t log2Length_, setCount_;
-  std::unique_ptr<Slot[]> slots_;
+private:
+    struct Slot {
+        std::mutex mutex;
+        std::atomic<const FixedPoint2*> ready{nullptr};
+        std::vector<FixedPoint2> points;
+    };
+    uint32_t log2Length_, setCount_;
+    std::unique_ptr<Slot[]> slots_;
 };
 
-}  // namespace stipple
+} // namespace stipple

@@ -22,48 +22,48 @@ namespace stipple {
 namespace {
 
 class Random {
- public:
-  explicit Random(uint64_t key) : key_(key) {}
-  uint64_t next() { return hashAt(key_, counter_++); }
-  uint32_t below(uint32_t n) { return static_cast<uint32_t>((next() >> 32) * n >> 32); }
+public:
+    explicit Random(uint64_t key) : key_(key) {}
+    uint64_t next() { return hashAt(key_, counter_++); }
+    uint32_t below(uint32_t n) { return static_cast<uint32_t>((next() >> 32) * n >> 32); }
 
- private:
-  uint64_t key_, counter_ = 0;
+private:
+    uint64_t key_, counter_ = 0;
 };
 
 // Occupancy of the elementary intervals of area 2^-k for every shape a = 0..k (2^a columns, 2^(k-a) rows).
 class IntervalOccupancy {
- public:
-  explicit IntervalOccupancy(uint32_t k) : k_(k), bits_(size_t(k + 1) << k, false) {}
+public:
+    explicit IntervalOccupancy(uint32_t k) : k_(k), bits_(size_t(k + 1) << k, false) {}
 
-  bool isFree(uint32_t x, uint32_t y) const {
-    for (uint32_t a = 0; a <= k_; ++a)
-      if (bits_[cell(a, x, y)]) return false;
-    return true;
-  }
-  // The cell of shape a (2^a columns) holding x, in the row given by the top k - a digits of y (yPrefix).
-  bool isFreeIn(uint32_t a, uint32_t x, uint32_t yPrefix) const {
-    const uint32_t column = a == 0 ? 0 : x >> (32 - a);
-    return !bits_[(size_t(a) << k_) + (size_t(column) << (k_ - a)) + yPrefix];
-  }
-  void occupy(uint32_t x, uint32_t y) {
-    for (uint32_t a = 0; a <= k_; ++a) bits_[cell(a, x, y)] = true;
-  }
+    bool isFree(uint32_t x, uint32_t y) const {
+        for (uint32_t a = 0; a <= k_; ++a)
+            if (bits_[cell(a, x, y)]) return false;
+        return true;
+    }
+    // The cell of shape a (2^a columns) holding x, in the row given by the top k - a digits of y (yPrefix).
+    bool isFreeIn(uint32_t a, uint32_t x, uint32_t yPrefix) const {
+        const uint32_t column = a == 0 ? 0 : x >> (32 - a);
+        return !bits_[(size_t(a) << k_) + (size_t(column) << (k_ - a)) + yPrefix];
+    }
+    void occupy(uint32_t x, uint32_t y) {
+        for (uint32_t a = 0; a <= k_; ++a) bits_[cell(a, x, y)] = true;
+    }
 
- private:
-  size_t cell(uint32_t a, uint32_t x, uint32_t y) const {
-    const uint32_t column = a == 0 ? 0 : x >> (32 - a);
-    const uint32_t row = a == k_ ? 0 : y >> (32 - (k_ - a));
-    return (size_t(a) << k_) + (size_t(column) << (k_ - a)) + row;
-  }
-  uint32_t k_;
-  std::vector<bool> bits_;
+private:
+    size_t cell(uint32_t a, uint32_t x, uint32_t y) const {
+        const uint32_t column = a == 0 ? 0 : x >> (32 - a);
+        const uint32_t row = a == k_ ? 0 : y >> (32 - (k_ - a));
+        return (size_t(a) << k_) + (size_t(column) << (k_ - a)) + row;
+    }
+    uint32_t k_;
+    std::vector<bool> bits_;
 };
 
 // A fixed-point coordinate inside stratum s of 2^k strata, with random bits below.
 inline uint32_t inStratum(uint32_t s, uint32_t k, uint64_t bits) {
-  if (k == 0) return static_cast<uint32_t>(bits >> 32);
-  return (s << (32 - k)) | (static_cast<uint32_t>(bits >> 32) >> k);
+    if (k == 0) return static_cast<uint32_t>(bits >> 32);
+    return (s << (32 - k)) | (static_cast<uint32_t>(bits >> 32) >> k);
 }
 
 // Places one point in the sub-quadrant whose finest x strata start at x0 (and y strata at y0), each spanning
@@ -73,114 +73,114 @@ inline uint32_t inStratum(uint32_t s, uint32_t k, uint64_t bits) {
 // a depth-first search with a random branch order meets every constraint as early as it can be checked.
 bool placePoint(IntervalOccupancy& occupancy, uint32_t k, uint32_t x0, uint32_t y0, uint32_t span, Random& random,
                 FixedPoint2& out) {
-  const uint32_t fixedDigits = k - static_cast<uint32_t>(std::countr_zero(span));  // y digits the sub-quadrant fixes
-  const uint32_t start = random.below(span);
-  for (uint32_t i = 0; i < span; ++i) {
-    const uint32_t x = inStratum(x0 + (start + i) % span, k, random.next());
-    if (!occupancy.isFreeIn(k, x, 0)) continue;  // the x stratum itself (shape 2^k x 1)
-    // Depth-first over y digits fixedDigits..k-1; prefixes of the sub-quadrant's fixed digits are checked first.
-    const uint32_t yTop = y0 >> (k - fixedDigits);
-    bool blocked = false;
-    for (uint32_t t = 1; t <= fixedDigits && !blocked; ++t)
-      blocked = !occupancy.isFreeIn(k - t, x, yTop >> (fixedDigits - t));
-    if (blocked) continue;
-    uint32_t stack[33];
-    uint32_t flips[33];
-    uint32_t depth = fixedDigits;
-    uint32_t prefix = yTop;
-    if (depth == k) {
-      out = {x, inStratum(prefix, k, random.next())};
-      occupancy.occupy(out.x, out.y);
-      return true;
-    }
-    flips[depth] = random.next() & 1u;
-    stack[depth] = 0;
-    while (true) {
-      if (stack[depth] == 2) {  // both children tried
-        if (depth == fixedDigits) break;
-        --depth;
-        prefix >>= 1;
-        ++stack[depth];
-        continue;
-      }
-      const uint32_t child = (prefix << 1) | (stack[depth] ^ flips[depth]);
-      if (occupancy.isFreeIn(k - depth - 1, x, child)) {
-        if (depth + 1 == k) {
-          out = {x, inStratum(child, k, random.next())};
-          occupancy.occupy(out.x, out.y);
-          return true;
+    const uint32_t fixedDigits = k - static_cast<uint32_t>(std::countr_zero(span)); // y digits the sub-quadrant fixes
+    const uint32_t start = random.below(span);
+    for (uint32_t i = 0; i < span; ++i) {
+        const uint32_t x = inStratum(x0 + (start + i) % span, k, random.next());
+        if (!occupancy.isFreeIn(k, x, 0)) continue; // the x stratum itself (shape 2^k x 1)
+        // Depth-first over y digits fixedDigits..k-1; prefixes of the sub-quadrant's fixed digits are checked first.
+        const uint32_t yTop = y0 >> (k - fixedDigits);
+        bool blocked = false;
+        for (uint32_t t = 1; t <= fixedDigits && !blocked; ++t)
+            blocked = !occupancy.isFreeIn(k - t, x, yTop >> (fixedDigits - t));
+        if (blocked) continue;
+        uint32_t stack[33];
+        uint32_t flips[33];
+        uint32_t depth = fixedDigits;
+        uint32_t prefix = yTop;
+        if (depth == k) {
+            out = {x, inStratum(prefix, k, random.next())};
+            occupancy.occupy(out.x, out.y);
+            return true;
         }
-        prefix = child;
-        ++depth;
-        stack[depth] = 0;
         flips[depth] = random.next() & 1u;
-      } else {
-        ++stack[depth];
-      }
+        stack[depth] = 0;
+        while (true) {
+            if (stack[depth] == 2) { // both children tried
+                if (depth == fixedDigits) break;
+                --depth;
+                prefix >>= 1;
+                ++stack[depth];
+                continue;
+            }
+            const uint32_t child = (prefix << 1) | (stack[depth] ^ flips[depth]);
+            if (occupancy.isFreeIn(k - depth - 1, x, child)) {
+                if (depth + 1 == k) {
+                    out = {x, inStratum(child, k, random.next())};
+                    occupancy.occupy(out.x, out.y);
+                    return true;
+                }
+                prefix = child;
+                ++depth;
+                stack[depth] = 0;
+                flips[depth] = random.next() & 1u;
+            } else {
+                ++stack[depth];
+            }
+        }
     }
-  }
-  return false;
+    return false;
 }
 
 // Grows points[0, 2^k) to points[0, 2^(k+1)). Returns false on a dead end (the caller redraws the level).
 bool extend(std::vector<FixedPoint2>& points, uint32_t k, Random& random) {
-  const uint32_t n = 1u << k, next = k + 1;
-  IntervalOccupancy occupancy(next);
-  for (uint32_t i = 0; i < n; ++i) occupancy.occupy(points[i].x, points[i].y);
-  if (k % 2 == 0) {
-    // n = 4^q: cells of a 2^q grid hold one point each; the new point takes the diagonally opposite sub-quadrant.
-    const uint32_t q = k / 2, sub = q + 1;               // sub-quadrants: a 2^(q+1) grid
-    const uint32_t span = 1u << (next - sub);            // finest strata (2^next) per sub-quadrant side
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint32_t sx = (points[i].x >> (32 - sub)) ^ 1u, sy = (points[i].y >> (32 - sub)) ^ 1u;
-      if (!placePoint(occupancy, next, sx * span, sy * span, span, random, points[n + i])) return false;
+    const uint32_t n = 1u << k, next = k + 1;
+    IntervalOccupancy occupancy(next);
+    for (uint32_t i = 0; i < n; ++i) occupancy.occupy(points[i].x, points[i].y);
+    if (k % 2 == 0) {
+        // n = 4^q: cells of a 2^q grid hold one point each; the new point takes the diagonally opposite sub-quadrant.
+        const uint32_t q = k / 2, sub = q + 1;    // sub-quadrants: a 2^(q+1) grid
+        const uint32_t span = 1u << (next - sub); // finest strata (2^next) per sub-quadrant side
+        for (uint32_t i = 0; i < n; ++i) {
+            const uint32_t sx = (points[i].x >> (32 - sub)) ^ 1u, sy = (points[i].y >> (32 - sub)) ^ 1u;
+            if (!placePoint(occupancy, next, sx * span, sy * span, span, random, points[n + i])) return false;
+        }
+    } else {
+        // n = 2 * 4^q: each cell of the 2^q grid holds points i and i + n/2 in diagonal sub-quadrants; points i + n
+        // and i + 3n/2 take the two sub-quadrants left.
+        const uint32_t half = n / 2, q = (k - 1) / 2, sub = q + 1;
+        const uint32_t span = 1u << (next - sub);
+        for (uint32_t i = 0; i < half; ++i) {
+            const uint32_t ax = points[i].x >> (32 - sub), ay = points[i].y >> (32 - sub);
+            const bool swapFirst = random.next() & 1u;
+            // The two empty sub-quadrants of the cell: (ax ^ 1, ay) and (ax, ay ^ 1).
+            const uint32_t firstX = swapFirst ? ax : ax ^ 1u, firstY = swapFirst ? ay ^ 1u : ay;
+            const uint32_t secondX = swapFirst ? ax ^ 1u : ax, secondY = swapFirst ? ay : ay ^ 1u;
+            if (!placePoint(occupancy, next, firstX * span, firstY * span, span, random, points[n + i])) return false;
+            if (!placePoint(occupancy, next, secondX * span, secondY * span, span, random, points[n + half + i]))
+                return false;
+        }
     }
-  } else {
-    // n = 2 * 4^q: each cell of the 2^q grid holds points i and i + n/2 in diagonal sub-quadrants; points i + n
-    // and i + 3n/2 take the two sub-quadrants left.
-    const uint32_t half = n / 2, q = (k - 1) / 2, sub = q + 1;
-    const uint32_t span = 1u << (next - sub);
-    for (uint32_t i = 0; i < half; ++i) {
-      const uint32_t ax = points[i].x >> (32 - sub), ay = points[i].y >> (32 - sub);
-      const bool swapFirst = random.next() & 1u;
-      // The two empty sub-quadrants of the cell: (ax ^ 1, ay) and (ax, ay ^ 1).
-      const uint32_t firstX = swapFirst ? ax : ax ^ 1u, firstY = swapFirst ? ay ^ 1u : ay;
-      const uint32_t secondX = swapFirst ? ax ^ 1u : ax, secondY = swapFirst ? ay : ay ^ 1u;
-      if (!placePoint(occupancy, next, firstX * span, firstY * span, span, random, points[n + i])) return false;
-      if (!placePoint(occupancy, next, secondX * span, secondY * span, span, random, points[n + half + i]))
-        return false;
-    }
-  }
-  return true;
+    return true;
 }
 
-}  // namespace
+} // namespace
 
 bool isElementaryNet(const FixedPoint2* points, uint32_t k) {
-  IntervalOccupancy occupancy(k);
-  for (uint32_t i = 0; i < (1u << k); ++i) {
-    if (!occupancy.isFree(points[i].x, points[i].y)) return false;
-    occupancy.occupy(points[i].x, points[i].y);
-  }
-  return true;
+    IntervalOccupancy occupancy(k);
+    for (uint32_t i = 0; i < (1u << k); ++i) {
+        if (!occupancy.isFree(points[i].x, points[i].y)) return false;
+        occupancy.occupy(points[i].x, points[i].y);
+    }
+    return true;
 }
 
 std::vector<FixedPoint2> generatePmj02(uint32_t log2Length, uint64_t seed) {
-  std::vector<FixedPoint2> points(size_t(1) << log2Length);
-  Random first(hashCombine(seed, 0));
-  points[0] = {static_cast<uint32_t>(first.next() >> 32), static_cast<uint32_t>(first.next() >> 32)};
-  constexpr uint32_t kAttemptsPerLevel = 64;
-  for (uint32_t k = 0; k < log2Length; ++k) {
-    bool done = false;
-    for (uint32_t attempt = 0; attempt < kAttemptsPerLevel && !done; ++attempt) {
-      Random random(hashCombine(seed, (uint64_t(k + 1) << 32) | attempt));
-      done = extend(points, k, random);
+    std::vector<FixedPoint2> points(size_t(1) << log2Length);
+    Random first(hashCombine(seed, 0));
+    points[0] = {static_cast<uint32_t>(first.next() >> 32), static_cast<uint32_t>(first.next() >> 32)};
+    constexpr uint32_t kAttemptsPerLevel = 64;
+    for (uint32_t k = 0; k < log2Length; ++k) {
+        bool done = false;
+        for (uint32_t attempt = 0; attempt < kAttemptsPerLevel && !done; ++attempt) {
+            Random random(hashCombine(seed, (uint64_t(k + 1) << 32) | attempt));
+            done = extend(points, k, random);
+        }
+        if (!done)
+            throw Error(STIPPLE_ERROR_INTERNAL, "pmj02: no valid extension from 2^" + std::to_string(k) +
+                                                    " points in " + std::to_string(kAttemptsPerLevel) + " attempts");
     }
-    if (!done)
-      throw Error(STIPPLE_ERROR_INTERNAL, "pmj02: no valid extension from 2^" + std::to_string(k) + " points in " +
-                                              std::to_string(kAttemptsPerLevel) + " attempts");
-  }
-  return points;
+    return points;
 }
 
-}  // namespace stipple
+} // namespace stipple

@@ -11,7 +11,7 @@
 namespace stipple {
 
 struct FixedPoint2 {
-  uint32_t x, y;
+    uint32_t x, y;
 };
 
 std::vector<FixedPoint2> generatePmj02(uint32_t log2Length, uint64_t seed);
@@ -20,4 +20,4 @@ std::vector<FixedPoint2> generatePmj02(uint32_t log2Length, uint64_t seed);
 // verification and by the tests).
 bool isElementaryNet(const FixedPoint2* points, uint32_t k);
 
-}  // namespace stipple
+} // namespace stipple

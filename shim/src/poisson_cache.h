@@ -22,53 +22,53 @@
 namespace stipple {
 
 class PoissonFamily {
- public:
-  PoissonFamily(uint32_t arity, uint32_t points, uint32_t setCount);
+public:
+    PoissonFamily(uint32_t arity, uint32_t points, uint32_t setCount);
 
-  uint32_t arity() const { return arity_; }
-  uint32_t points() const { return points_; }
-  uint32_t setCount() const { return setCount_; }
-  size_t byteCapacity() const { return size_t(setCount_) * points_ * arity_ * sizeof(float); }
+    uint32_t arity() const { return arity_; }
+    uint32_t points() const { return points_; }
+    uint32_t setCount() const { return setCount_; }
+    size_t byteCapacity() const { return size_t(setCount_) * points_ * arity_ * sizeof(float); }
 
-  // Set j (0 <= j < setCount), M*arity floats in [0,1). Generates it on first use; safe from any thread.
-  const float* set(uint32_t j) const;
-  bool generated(uint32_t j) const { return slots_[j].ready.load(std::memory_order_acquire) != nullptr; }
+    // Set j (0 <= j < setCount), M*arity floats in [0,1). Generates it on first use; safe from any thread.
+    const float* set(uint32_t j) const;
+    bool generated(uint32_t j) const { return slots_[j].ready.load(std::memory_order_acquire) != nullptr; }
 
-  // The seed set j is generated from: a function of (arity, M, j) only.
-  static uint64_t setSeed(uint32_t arity, uint32_t points, uint32_t j);
+    // The seed set j is generated from: a function of (arity, M, j) only.
+    static uint64_t setSeed(uint32_t arity, uint32_t points, uint32_t j);
 
- private:
-  struct Slot {
-    std::mutex mutex;
-    std::atomic<const float*> ready{nullptr};
-    std::vector<float> points;
-  };
-  uint32_t arity_, points_, setCount_;
-  std::unique_ptr<Slot[]> slots_;
+private:
+    struct Slot {
+        std::mutex mutex;
+        std::atomic<const float*> ready{nullptr};
+        std::vector<float> points;
+    };
+    uint32_t arity_, points_, setCount_;
+    std::unique_ptr<Slot[]> slots_;
 };
 
 class PoissonCache {
- public:
-  static constexpr size_t kByteBudget = size_t(64) << 20;
-  // Sets per family: as many as fit in 2 MiB, at least 1, at most 32.
-  static constexpr size_t kFamilyBytes = size_t(2) << 20;
-  static constexpr uint32_t kMaxSetsPerFamily = 32;
+public:
+    static constexpr size_t kByteBudget = size_t(64) << 20;
+    // Sets per family: as many as fit in 2 MiB, at least 1, at most 32.
+    static constexpr size_t kFamilyBytes = size_t(2) << 20;
+    static constexpr uint32_t kMaxSetsPerFamily = 32;
 
-  static PoissonCache& global();
-  static uint32_t setCountFor(uint32_t arity, uint32_t points);
+    static PoissonCache& global();
+    static uint32_t setCountFor(uint32_t arity, uint32_t points);
 
-  std::shared_ptr<const PoissonFamily> acquire(uint32_t arity, uint32_t points);
-  size_t bytesHeld() const;
+    std::shared_ptr<const PoissonFamily> acquire(uint32_t arity, uint32_t points);
+    size_t bytesHeld() const;
 
- private:
-  struct Entry {
-    std::shared_ptr<const PoissonFamily> family;
-    uint64_t lastUse = 0;
-  };
-  mutable std::mutex mutex_;
-  std::map<std::pair<uint32_t, uint32_t>, Entry> entries_;
-  size_t bytes_ = 0;
-  uint64_t clock_ = 0;
+private:
+    struct Entry {
+        std::shared_ptr<const PoissonFamily> family;
+        uint64_t lastUse = 0;
+    };
+    mutable std::mutex mutex_;
+    std::map<std::pair<uint32_t, uint32_t>, Entry> entries_;
+    size_t bytes_ = 0;
+    uint64_t clock_ = 0;
 };
 
-}  // namespace stipple
+} // namespace stipple

@@ -15,38 +15,38 @@
 namespace stipple {
 
 class Sampler {
- public:
-  Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions,
-          uint32_t flags = 0);
+public:
+    Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions,
+            uint32_t flags = 0);
 
-  uint32_t pattern() const { return pattern_; }
-  uint32_t samplesPerPixel() const { return samplesPerPixel_; }
-  uint64_t seed() const { return seed_; }
-  uint32_t flags() const { return flags_; }
-  uint32_t dimensionCount() const { return static_cast<uint32_t>(dimensions_.size()); }
-  const Dimension& dimension(uint32_t d) const { return dimensions_[d]; }
+    uint32_t pattern() const { return pattern_; }
+    uint32_t samplesPerPixel() const { return samplesPerPixel_; }
+    uint64_t seed() const { return seed_; }
+    uint32_t flags() const { return flags_; }
+    uint32_t dimensionCount() const { return static_cast<uint32_t>(dimensions_.size()); }
+    const Dimension& dimension(uint32_t d) const { return dimensions_[d]; }
 
-  // Arguments are checked by the ABI layer; these only compute.
-  void fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const;
-  void sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, float* out) const;
-  void sampleIndependent(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t stream, float* out,
-                         size_t count) const;
+    // Arguments are checked by the ABI layer; these only compute.
+    void fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const;
+    void sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, float* out) const;
+    void sampleIndependent(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t stream, float* out,
+                           size_t count) const;
 
- private:
-  uint64_t key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-  bool blueNoise() const { return (flags_ & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) != 0; }
-  bool maskShifted() const;  // blue noise by per-pixel toroidal shifts (poisson, poisson-seed, pmj02)
-  std::optional<CrossPixelStrata> crossPixelStrata(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-  // The key the pattern's set is drawn from: per pixel, or per blue-noise tile (shared, then shifted per pixel).
-  uint64_t patternKey(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-  SobolSet sobolSet(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-  void blueNoiseShiftInPlace(uint32_t pixelX, uint32_t pixelY, uint32_t d, size_t points, float* out) const;
+private:
+    uint64_t key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
+    bool blueNoise() const { return (flags_ & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) != 0; }
+    bool maskShifted() const; // blue noise by per-pixel toroidal shifts (poisson, poisson-seed, pmj02)
+    std::optional<CrossPixelStrata> crossPixelStrata(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
+    // The key the pattern's set is drawn from: per pixel, or per blue-noise tile (shared, then shifted per pixel).
+    uint64_t patternKey(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
+    SobolSet sobolSet(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
+    void blueNoiseShiftInPlace(uint32_t pixelX, uint32_t pixelY, uint32_t d, size_t points, float* out) const;
 
-  uint32_t pattern_;
-  uint32_t samplesPerPixel_;
-  uint64_t seed_;
-  std::vector<Dimension> dimensions_;
-  uint32_t flags_;
+    uint32_t pattern_;
+    uint32_t samplesPerPixel_;
+    uint64_t seed_;
+    std::vector<Dimension> dimensions_;
+    uint32_t flags_;
 };
 
 // Validates desc completely (every message names the argument, its value and what was expected) and builds
@@ -58,4 +58,4 @@ Sampler* createSampler(const stipple_sampler_desc& desc);
 inline stipple_sampler toHandle(Sampler* sampler) { return reinterpret_cast<stipple_sampler>(sampler); }
 inline Sampler* fromHandle(stipple_sampler handle) { return reinterpret_cast<Sampler*>(handle); }
 
-}  // namespace stipple
+} // namespace stipple

@@ -15,115 +15,114 @@ namespace stipple {
 namespace {
 
 std::string patternList() {
-  return "0 (independent), 1 (stratified), 2 (poisson), 3 (poisson-seed), 4 (sobol) or 5 (pmj02)";
+    return "0 (independent), 1 (stratified), 2 (poisson), 3 (poisson-seed), 4 (sobol) or 5 (pmj02)";
 }
 
 void requireZeroTail(const void* object, size_t knownSize, size_t structSize, const std::string& argument) {
-  const unsigned char* bytes = static_cast<const unsigned char*>(object);
-  for (size_t i = knownSize; i < structSize; ++i)
-    if (bytes[i] != 0)
-      throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                  argument + " has struct_size " + std::to_string(structSize) + " and a non-zero byte at offset " +
-                      std::to_string(i) + "; this library (ABI " + std::to_string(STIPPLE_ABI_MAJOR) + "." +
-                      std::to_string(STIPPLE_ABI_MINOR) + ") knows " + std::to_string(knownSize) +
-                      " bytes and requires unknown trailing fields to be zero");
+    const unsigned char* bytes = static_cast<const unsigned char*>(object);
+    for (size_t i = knownSize; i < structSize; ++i)
+        if (bytes[i] != 0)
+            throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                        argument + " has struct_size " + std::to_string(structSize) +
+                            " and a non-zero byte at offset " + std::to_string(i) + "; this library (ABI " +
+                            std::to_string(STIPPLE_ABI_MAJOR) + "." + std::to_string(STIPPLE_ABI_MINOR) + ") knows " +
+                            std::to_string(knownSize) + " bytes and requires unknown trailing fields to be zero");
 }
 
 Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32_t pattern, uint32_t samplesPerPixel) {
-  const std::string argument = "desc->dimensions[" + std::to_string(index) + "]";
-  if (in.arity < 1 || in.arity > 3)
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                argument + ".arity is " + std::to_string(in.arity) + "; expected 1, 2 or 3");
-  const uint32_t count = in.count == 0 ? 1 : in.count;
-  if (count > STIPPLE_MAX_VALUES_PER_SAMPLE)
-    throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument + ".count is " + std::to_string(in.count) +
-                                                "; expected 1.." + std::to_string(STIPPLE_MAX_VALUES_PER_SAMPLE) +
-                                                " (0 reads as 1)");
-  if (uint64_t(count) * samplesPerPixel > STIPPLE_MAX_SET_SIZE)
-    throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                argument + ".count is " + std::to_string(count) + ": count * samples_per_pixel = " +
-                    std::to_string(uint64_t(count) * samplesPerPixel) + "; expected at most STIPPLE_MAX_SET_SIZE (" +
-                    std::to_string(STIPPLE_MAX_SET_SIZE) + ")");
-  if (in.reserved != 0)
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                argument + ".reserved is " + std::to_string(in.reserved) + "; expected 0");
-  Dimension dim;
-  dim.arity = in.arity;
-  dim.count = count;
-  dim.setSize = count * samplesPerPixel;
-  if (in.name) {
-    const size_t length = strnlen(in.name, STIPPLE_MAX_NAME_LENGTH + 1);
-    if (length > STIPPLE_MAX_NAME_LENGTH)
-      throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument + ".name is longer than " +
-                                                  std::to_string(STIPPLE_MAX_NAME_LENGTH) +
-                                                  " characters; expected a shorter name or NULL");
-    dim.name.assign(in.name, length);
-  }
-  if (pattern == STIPPLE_PATTERN_STRATIFIED) dim.grid = StrataGrid::choose(dim.arity, dim.setSize);
-  if (pattern == STIPPLE_PATTERN_POISSON) dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize);
-  dim.log2Length = static_cast<uint32_t>(std::bit_width(dim.setSize - 1));
-  if (pattern == STIPPLE_PATTERN_PMJ02) {
-    if (dim.log2Length > Pmj02Family::kMaxLog2Length)
-      throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                  argument + ": count * samples_per_pixel = " + std::to_string(dim.setSize) +
-                      "; the pmj02 pattern serves sets of at most " +
-                      std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
-    dim.pmj02 = Pmj02Family::acquire(dim.log2Length);
-  }
-  return dim;
+    const std::string argument = "desc->dimensions[" + std::to_string(index) + "]";
+    if (in.arity < 1 || in.arity > 3)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    argument + ".arity is " + std::to_string(in.arity) + "; expected 1, 2 or 3");
+    const uint32_t count = in.count == 0 ? 1 : in.count;
+    if (count > STIPPLE_MAX_VALUES_PER_SAMPLE)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument + ".count is " + std::to_string(in.count) + "; expected 1.." +
+                                                    std::to_string(STIPPLE_MAX_VALUES_PER_SAMPLE) + " (0 reads as 1)");
+    if (uint64_t(count) * samplesPerPixel > STIPPLE_MAX_SET_SIZE)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    argument + ".count is " + std::to_string(count) +
+                        ": count * samples_per_pixel = " + std::to_string(uint64_t(count) * samplesPerPixel) +
+                        "; expected at most STIPPLE_MAX_SET_SIZE (" + std::to_string(STIPPLE_MAX_SET_SIZE) + ")");
+    if (in.reserved != 0)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    argument + ".reserved is " + std::to_string(in.reserved) + "; expected 0");
+    Dimension dim;
+    dim.arity = in.arity;
+    dim.count = count;
+    dim.setSize = count * samplesPerPixel;
+    if (in.name) {
+        const size_t length = strnlen(in.name, STIPPLE_MAX_NAME_LENGTH + 1);
+        if (length > STIPPLE_MAX_NAME_LENGTH)
+            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument + ".name is longer than " +
+                                                        std::to_string(STIPPLE_MAX_NAME_LENGTH) +
+                                                        " characters; expected a shorter name or NULL");
+        dim.name.assign(in.name, length);
+    }
+    if (pattern == STIPPLE_PATTERN_STRATIFIED) dim.grid = StrataGrid::choose(dim.arity, dim.setSize);
+    if (pattern == STIPPLE_PATTERN_POISSON) dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize);
+    dim.log2Length = static_cast<uint32_t>(std::bit_width(dim.setSize - 1));
+    if (pattern == STIPPLE_PATTERN_PMJ02) {
+        if (dim.log2Length > Pmj02Family::kMaxLog2Length)
+            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument +
+                                                        ": count * samples_per_pixel = " + std::to_string(dim.setSize) +
+                                                        "; the pmj02 pattern serves sets of at most " +
+                                                        std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
+        dim.pmj02 = Pmj02Family::acquire(dim.log2Length);
+    }
+    return dim;
 }
 
-}  // namespace
+} // namespace
 
 Sampler* createSampler(const stipple_sampler_desc& desc) {
-  constexpr size_t kDescSize = sizeof(stipple_sampler_desc);
-  if (desc.struct_size < kDescSize)
-    throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->struct_size is " + std::to_string(desc.struct_size) +
-                                               "; expected at least " + std::to_string(kDescSize) +
-                                               " (sizeof(stipple_sampler_desc))");
-  requireZeroTail(&desc, kDescSize, desc.struct_size, "desc");
-  if (desc.pattern >= STIPPLE_PATTERN_COUNT)
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                "desc->pattern is " + std::to_string(desc.pattern) + "; expected " + patternList());
-  if (desc.samples_per_pixel < 1 || desc.samples_per_pixel > STIPPLE_MAX_SAMPLES_PER_PIXEL)
-    throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
-                                                "; expected 1.." + std::to_string(STIPPLE_MAX_SAMPLES_PER_PIXEL));
-  if (desc.dimension_count < 1 || desc.dimension_count > STIPPLE_MAX_DIMENSIONS)
-    throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->dimension_count is " + std::to_string(desc.dimension_count) +
-                                                "; expected 1.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
-                                                " (an empty layout has nothing to sample)");
-  requireNonNull(desc.dimensions, "desc->dimensions");
-  constexpr uint32_t kKnownFlags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
-  if ((desc.flags & ~kKnownFlags) != 0)
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                "desc->flags is " + std::to_string(desc.flags) + "; unknown bits " +
-                    std::to_string(desc.flags & ~kKnownFlags) +
-                    " (this library knows only STIPPLE_SAMPLER_FLAG_BLUE_NOISE = 1)");
-  if (desc.reserved != 0)
-    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                "desc->reserved is " + std::to_string(desc.reserved) + "; expected 0");
+    constexpr size_t kDescSize = sizeof(stipple_sampler_desc);
+    if (desc.struct_size < kDescSize)
+        throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->struct_size is " + std::to_string(desc.struct_size) +
+                                                   "; expected at least " + std::to_string(kDescSize) +
+                                                   " (sizeof(stipple_sampler_desc))");
+    requireZeroTail(&desc, kDescSize, desc.struct_size, "desc");
+    if (desc.pattern >= STIPPLE_PATTERN_COUNT)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    "desc->pattern is " + std::to_string(desc.pattern) + "; expected " + patternList());
+    if (desc.samples_per_pixel < 1 || desc.samples_per_pixel > STIPPLE_MAX_SAMPLES_PER_PIXEL)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
+                                                    "; expected 1.." + std::to_string(STIPPLE_MAX_SAMPLES_PER_PIXEL));
+    if (desc.dimension_count < 1 || desc.dimension_count > STIPPLE_MAX_DIMENSIONS)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->dimension_count is " + std::to_string(desc.dimension_count) +
+                                                    "; expected 1.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
+                                                    " (an empty layout has nothing to sample)");
+    requireNonNull(desc.dimensions, "desc->dimensions");
+    constexpr uint32_t kKnownFlags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+    if ((desc.flags & ~kKnownFlags) != 0)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    "desc->flags is " + std::to_string(desc.flags) + "; unknown bits " +
+                        std::to_string(desc.flags & ~kKnownFlags) +
+                        " (this library knows only STIPPLE_SAMPLER_FLAG_BLUE_NOISE = 1)");
+    if (desc.reserved != 0)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    "desc->reserved is " + std::to_string(desc.reserved) + "; expected 0");
 
-  constexpr size_t kDimensionSize = sizeof(stipple_dimension_desc);
-  const uint32_t stride = desc.dimensions[0].struct_size;
-  if (stride < kDimensionSize)
-    throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->dimensions[0].struct_size is " + std::to_string(stride) +
-                                               "; expected at least " + std::to_string(kDimensionSize) +
-                                               " (sizeof(stipple_dimension_desc))");
-  const unsigned char* base = reinterpret_cast<const unsigned char*>(desc.dimensions);
-  std::vector<Dimension> dimensions;
-  dimensions.reserve(desc.dimension_count);
-  for (uint32_t d = 0; d < desc.dimension_count; ++d) {
-    const unsigned char* bytes = base + size_t(d) * stride;
-    stipple_dimension_desc entry;
-    std::memcpy(&entry, bytes, kDimensionSize);
-    if (entry.struct_size != stride)
-      throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->dimensions[" + std::to_string(d) + "].struct_size is " +
-                                                 std::to_string(entry.struct_size) + "; expected " +
-                                                 std::to_string(stride) + " like desc->dimensions[0]");
-    requireZeroTail(bytes, kDimensionSize, stride, "desc->dimensions[" + std::to_string(d) + "]");
-    dimensions.push_back(makeDimension(entry, d, desc.pattern, desc.samples_per_pixel));
-  }
-  return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions), desc.flags);
+    constexpr size_t kDimensionSize = sizeof(stipple_dimension_desc);
+    const uint32_t stride = desc.dimensions[0].struct_size;
+    if (stride < kDimensionSize)
+        throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->dimensions[0].struct_size is " + std::to_string(stride) +
+                                                   "; expected at least " + std::to_string(kDimensionSize) +
+                                                   " (sizeof(stipple_dimension_desc))");
+    const unsigned char* base = reinterpret_cast<const unsigned char*>(desc.dimensions);
+    std::vector<Dimension> dimensions;
+    dimensions.reserve(desc.dimension_count);
+    for (uint32_t d = 0; d < desc.dimension_count; ++d) {
+        const unsigned char* bytes = base + size_t(d) * stride;
+        stipple_dimension_desc entry;
+        std::memcpy(&entry, bytes, kDimensionSize);
+        if (entry.struct_size != stride)
+            throw Error(STIPPLE_ERROR_STRUCT_SIZE, "desc->dimensions[" + std::to_string(d) + "].struct_size is " +
+                                                       std::to_string(entry.struct_size) + "; expected " +
+                                                       std::to_string(stride) + " like desc->dimensions[0]");
+        requireZeroTail(bytes, kDimensionSize, stride, "desc->dimensions[" + std::to_string(d) + "]");
+        dimensions.push_back(makeDimension(entry, d, desc.pattern, desc.samples_per_pixel));
+    }
+    return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions), desc.flags);
 }
 
-}  // namespace stipple
+} // namespace stipple

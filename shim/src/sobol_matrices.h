@@ -19,40 +19,40 @@ namespace detail {
 
 constexpr std::array<uint32_t, 32> sobolColumns(uint32_t degree, uint32_t coefficients,
                                                 std::array<uint32_t, 2> initial) {
-  std::array<uint64_t, 32> m{};
-  for (uint32_t j = 0; j < 32; ++j) {
-    if (j < degree) {
-      m[j] = initial[j];
-      continue;
+    std::array<uint64_t, 32> m{};
+    for (uint32_t j = 0; j < 32; ++j) {
+        if (j < degree) {
+            m[j] = initial[j];
+            continue;
+        }
+        // m_j = 2 a_1 m_{j-1} ^ 4 a_2 m_{j-2} ^ ... ^ 2^s m_{j-s} ^ m_{j-s}
+        uint64_t v = (m[j - degree] << degree) ^ m[j - degree];
+        for (uint32_t k = 1; k < degree; ++k)
+            if ((coefficients >> (degree - 1 - k)) & 1u) v ^= m[j - k] << k;
+        m[j] = v;
     }
-    // m_j = 2 a_1 m_{j-1} ^ 4 a_2 m_{j-2} ^ ... ^ 2^s m_{j-s} ^ m_{j-s}
-    uint64_t v = (m[j - degree] << degree) ^ m[j - degree];
-    for (uint32_t k = 1; k < degree; ++k)
-      if ((coefficients >> (degree - 1 - k)) & 1u) v ^= m[j - k] << k;
-    m[j] = v;
-  }
-  std::array<uint32_t, 32> columns{};
-  for (uint32_t j = 0; j < 32; ++j) columns[j] = static_cast<uint32_t>(m[j] << (31 - j));
-  return columns;
+    std::array<uint32_t, 32> columns{};
+    for (uint32_t j = 0; j < 32; ++j) columns[j] = static_cast<uint32_t>(m[j] << (31 - j));
+    return columns;
 }
 
-}  // namespace detail
+} // namespace detail
 
 inline constexpr std::array<std::array<uint32_t, 32>, 3> kSobolMatrices = [] {
-  std::array<std::array<uint32_t, 32>, 3> matrices{};
-  for (uint32_t j = 0; j < 32; ++j) matrices[0][j] = 1u << (31 - j);
-  matrices[1] = detail::sobolColumns(1, 0, {1, 0});
-  matrices[2] = detail::sobolColumns(2, 1, {1, 3});
-  return matrices;
+    std::array<std::array<uint32_t, 32>, 3> matrices{};
+    for (uint32_t j = 0; j < 32; ++j) matrices[0][j] = 1u << (31 - j);
+    matrices[1] = detail::sobolColumns(1, 0, {1, 0});
+    matrices[2] = detail::sobolColumns(2, 1, {1, 3});
+    return matrices;
 }();
 
 // The index-th point's coordinate in dimension d (0..2) as a 32-bit fraction.
 // Dimension 0 is the bit reversal; the others XOR the columns of the index's set bits.
 constexpr uint32_t sobolSample(uint32_t index, uint32_t d) {
-  if (d == 0) return reverseBits32(index);
-  uint32_t result = 0;
-  for (; index != 0; index &= index - 1) result ^= kSobolMatrices[d][std::countr_zero(index)];
-  return result;
+    if (d == 0) return reverseBits32(index);
+    uint32_t result = 0;
+    for (; index != 0; index &= index - 1) result ^= kSobolMatrices[d][std::countr_zero(index)];
+    return result;
 }
 
-}  // namespace stipple
+} // namespace stipple

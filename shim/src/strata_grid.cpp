@@ -12,101 +12,101 @@ namespace {
 
 // Smallest n with n^degree >= value (exact integer arithmetic; value <= 2^22).
 uint32_t ceilRoot(uint64_t value, uint32_t degree) {
-  uint64_t n = static_cast<uint64_t>(std::floor(std::pow(double(value), 1.0 / degree)));
-  auto power = [degree](uint64_t x) {
-    uint64_t p = 1;
-    for (uint32_t i = 0; i < degree; ++i) p *= x;
-    return p;
-  };
-  while (n > 1 && power(n - 1) >= value) --n;
-  while (power(n) < value) ++n;
-  return static_cast<uint32_t>(std::max<uint64_t>(n, 1));
+    uint64_t n = static_cast<uint64_t>(std::floor(std::pow(double(value), 1.0 / degree)));
+    auto power = [degree](uint64_t x) {
+        uint64_t p = 1;
+        for (uint32_t i = 0; i < degree; ++i) p *= x;
+        return p;
+    };
+    while (n > 1 && power(n - 1) >= value) --n;
+    while (power(n) < value) ++n;
+    return static_cast<uint32_t>(std::max<uint64_t>(n, 1));
 }
 
-}  // namespace
+} // namespace
 
 StrataGrid StrataGrid::choose(uint32_t arity, uint32_t points) {
-  StrataGrid grid;
-  grid.arity = arity;
-  grid.points = points;
-  if (arity == 1) {
-    grid.axis[0] = points;
-  } else if (arity == 2) {
-    uint32_t small = 1;
-    for (uint32_t a = 1; uint64_t(a) * a <= points; ++a)
-      if (points % a == 0) small = a;
-    uint32_t large = points / small;
-    if (large <= 2 * small) {
-      grid.axis[0] = large;
-      grid.axis[1] = small;
+    StrataGrid grid;
+    grid.arity = arity;
+    grid.points = points;
+    if (arity == 1) {
+        grid.axis[0] = points;
+    } else if (arity == 2) {
+        uint32_t small = 1;
+        for (uint32_t a = 1; uint64_t(a) * a <= points; ++a)
+            if (points % a == 0) small = a;
+        uint32_t large = points / small;
+        if (large <= 2 * small) {
+            grid.axis[0] = large;
+            grid.axis[1] = small;
+        } else {
+            uint32_t n = ceilRoot(points, 2);
+            grid.axis[0] = n;
+            grid.axis[1] = (points + n - 1) / n;
+        }
     } else {
-      uint32_t n = ceilRoot(points, 2);
-      grid.axis[0] = n;
-      grid.axis[1] = (points + n - 1) / n;
+        // Most-cubic a <= b <= c with a*b*c = M, minimising c / a.
+        uint32_t bestA = 1, bestB = 1, bestC = points;
+        for (uint32_t a = 1; uint64_t(a) * a * a <= points; ++a) {
+            if (points % a) continue;
+            uint32_t rest = points / a;
+            for (uint32_t b = a; uint64_t(b) * b <= rest; ++b) {
+                if (rest % b) continue;
+                uint32_t c = rest / b;
+                if (uint64_t(c) * bestA < uint64_t(bestC) * a) bestA = a, bestB = b, bestC = c;
+            }
+        }
+        if (bestC <= 2 * bestA) {
+            grid.axis[0] = bestC;
+            grid.axis[1] = bestB;
+            grid.axis[2] = bestA;
+        } else {
+            uint32_t n = ceilRoot(points, 3);
+            grid.axis[0] = n;
+            grid.axis[1] = n;
+            grid.axis[2] = static_cast<uint32_t>((uint64_t(points) + uint64_t(n) * n - 1) / (uint64_t(n) * n));
+        }
     }
-  } else {
-    // Most-cubic a <= b <= c with a*b*c = M, minimising c / a.
-    uint32_t bestA = 1, bestB = 1, bestC = points;
-    for (uint32_t a = 1; uint64_t(a) * a * a <= points; ++a) {
-      if (points % a) continue;
-      uint32_t rest = points / a;
-      for (uint32_t b = a; uint64_t(b) * b <= rest; ++b) {
-        if (rest % b) continue;
-        uint32_t c = rest / b;
-        if (uint64_t(c) * bestA < uint64_t(bestC) * a) bestA = a, bestB = b, bestC = c;
-      }
-    }
-    if (bestC <= 2 * bestA) {
-      grid.axis[0] = bestC;
-      grid.axis[1] = bestB;
-      grid.axis[2] = bestA;
-    } else {
-      uint32_t n = ceilRoot(points, 3);
-      grid.axis[0] = n;
-      grid.axis[1] = n;
-      grid.axis[2] = static_cast<uint32_t>((uint64_t(points) + uint64_t(n) * n - 1) / (uint64_t(n) * n));
-    }
-  }
-  grid.lineLength = grid.axis[arity - 1];
-  grid.lineCount = 1;
-  for (uint32_t c = 0; c + 1 < arity; ++c) grid.lineCount *= grid.axis[c];
-  grid.emptyCells = grid.lineLength * grid.lineCount - points;
-  for (uint32_t c = 0; c < 3; ++c) grid.inverseAxis[c] = 1.0 / grid.axis[c];
-  grid.lineDivider = FastDivider(grid.lineLength);
-  grid.shortLineDivider = FastDivider(grid.lineLength > 1 ? grid.lineLength - 1 : 1);
-  grid.axis0Divider = FastDivider(grid.axis[0]);
-  return grid;
+    grid.lineLength = grid.axis[arity - 1];
+    grid.lineCount = 1;
+    for (uint32_t c = 0; c + 1 < arity; ++c) grid.lineCount *= grid.axis[c];
+    grid.emptyCells = grid.lineLength * grid.lineCount - points;
+    for (uint32_t c = 0; c < 3; ++c) grid.inverseAxis[c] = 1.0 / grid.axis[c];
+    grid.lineDivider = FastDivider(grid.lineLength);
+    grid.shortLineDivider = FastDivider(grid.lineLength > 1 ? grid.lineLength - 1 : 1);
+    grid.axis0Divider = FastDivider(grid.axis[0]);
+    return grid;
 }
 
 void StrataGrid::cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const {
-  uint32_t line, position;
-  if (emptyCells == 0) {
-    line = lineDivider.divide(q);
-    position = q - line * lineLength;
-  } else {
-    const uint32_t shortLength = lineLength - 1;
-    const uint64_t inShortLines = uint64_t(emptyCells) * shortLength;
-    uint32_t t;
-    if (q < inShortLines) {
-      t = shortLineDivider.divide(q);
-      position = q - t * shortLength;
-      const uint32_t hole = static_cast<uint32_t>((uint64_t(t) + holeOffset) % lineLength);
-      position += position >= hole ? 1 : 0;
+    uint32_t line, position;
+    if (emptyCells == 0) {
+        line = lineDivider.divide(q);
+        position = q - line * lineLength;
     } else {
-      const uint32_t rest = static_cast<uint32_t>(q - inShortLines);
-      const uint32_t lines = lineDivider.divide(rest);
-      t = emptyCells + lines;
-      position = rest - lines * lineLength;
+        const uint32_t shortLength = lineLength - 1;
+        const uint64_t inShortLines = uint64_t(emptyCells) * shortLength;
+        uint32_t t;
+        if (q < inShortLines) {
+            t = shortLineDivider.divide(q);
+            position = q - t * shortLength;
+            const uint32_t hole = static_cast<uint32_t>((uint64_t(t) + holeOffset) % lineLength);
+            position += position >= hole ? 1 : 0;
+        } else {
+            const uint32_t rest = static_cast<uint32_t>(q - inShortLines);
+            const uint32_t lines = lineDivider.divide(rest);
+            t = emptyCells + lines;
+            position = rest - lines * lineLength;
+        }
+        line = permuteIndex(t, lineCount, lineSeed);
     }
-    line = permuteIndex(t, lineCount, lineSeed);
-  }
-  cell[arity - 1] = position;
-  if (arity == 2) {
-    cell[0] = line;
-  } else if (arity == 3) {
-    cell[1] = axis0Divider.divide(line);
-    cell[0] = line - cell[1] * axis[0];
-  }
+    cell[arity - 1] = position;
+    if (arity == 2) {
+        cell[0] = line;
+    } else if (arity == 3) {
+        cell[1] = axis0Divider.divide(line);
+        cell[0] = line - cell[1] * axis[0];
+    }
 }
 
-}  // namespace stipple
+} // namespace stipple

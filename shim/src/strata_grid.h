@@ -19,21 +19,21 @@
 namespace stipple {
 
 struct StrataGrid {
-  uint32_t arity = 1;
-  uint32_t points = 1;       // M
-  uint32_t axis[3] = {1, 1, 1};  // strata per axis
-  uint32_t lineLength = 1;   // L = axis[arity - 1]
-  uint32_t lineCount = 1;    // product of the other axes
-  uint32_t emptyCells = 0;   // s = cells - M (0 for an exact factorisation)
-  double inverseAxis[3] = {1, 1, 1};
-  FastDivider lineDivider, shortLineDivider, axis0Divider;  // by L, L - 1 (padded only), axis[0]
+    uint32_t arity = 1;
+    uint32_t points = 1;          // M
+    uint32_t axis[3] = {1, 1, 1}; // strata per axis
+    uint32_t lineLength = 1;      // L = axis[arity - 1]
+    uint32_t lineCount = 1;       // product of the other axes
+    uint32_t emptyCells = 0;      // s = cells - M (0 for an exact factorisation)
+    double inverseAxis[3] = {1, 1, 1};
+    FastDivider lineDivider, shortLineDivider, axis0Divider; // by L, L - 1 (padded only), axis[0]
 
-  static StrataGrid choose(uint32_t arity, uint32_t points);
-  bool padded() const { return emptyCells != 0; }
+    static StrataGrid choose(uint32_t arity, uint32_t points);
+    bool padded() const { return emptyCells != 0; }
 
-  // The cell of set point q (0 <= q < M), given the set's line permutation seed and empty-cell offset.
-  // Set points are ordered line by line in permuted line order; the first s lines are the ones with a hole.
-  void cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const;
+    // The cell of set point q (0 <= q < M), given the set's line permutation seed and empty-cell offset.
+    // Set points are ordered line by line in permuted line order; the first s lines are the ones with a hole.
+    void cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const;
 };
 
-}  // namespace stipple
+} // namespace stipple

@@ -16,7 +16,7 @@ STIPPLE_STATIC_ASSERT(offsetof(stipple_api, last_error_message) == 16, api_table
 
 int stipple_header_c99_check(void);
 int stipple_header_c99_check(void) {
-  stipple_get_api_fn entry = &stipple_get_api;
-  const stipple_api* api = 0;
-  return entry(STIPPLE_ABI_MAJOR, &api) == STIPPLE_OK ? (int)api->struct_size : -1;
+    stipple_get_api_fn entry = &stipple_get_api;
+    const stipple_api* api = 0;
+    return entry(STIPPLE_ABI_MAJOR, &api) == STIPPLE_OK ? (int)api->struct_size : -1;
 }

@@ -21,9 +21,9 @@ const uint32_t kSizes[] = {1, 2, 3, 5, 7, 13, 16, 31, 64, 97, 256, 1000, 1024, 4
 
 using Generator = std::vector<float> (*)(int, uint32_t, uint64_t);
 const Generator kGenerators[] = {&generatePoisson, &generatePoissonSeed};
-const char *const kGeneratorNames[] = {"poisson", "poisson-seed"};
+const char* const kGeneratorNames[] = {"poisson", "poisson-seed"};
 
-void checkSet(const std::vector<float> &pts, int dim, uint32_t n, const char *name) {
+void checkSet(const std::vector<float>& pts, int dim, uint32_t n, const char* name) {
     BOOST_TEST_CONTEXT(name << " dim " << dim << " n " << n) {
         BOOST_REQUIRE_EQUAL(pts.size(), size_t(n) * dim);
         for (float v : pts) {
@@ -34,7 +34,7 @@ void checkSet(const std::vector<float> &pts, int dim, uint32_t n, const char *na
 }
 
 // O(n^2) reference: minimum toroidal pair distance (own image at distance 1 for n = 1).
-double bruteMinDistance(const std::vector<float> &pts, int dim, uint32_t n) {
+double bruteMinDistance(const std::vector<float>& pts, int dim, uint32_t n) {
     double best = 1.0;
     for (uint32_t i = 0; i < n; ++i)
         for (uint32_t j = i + 1; j < n; ++j) {
@@ -49,26 +49,24 @@ double bruteMinDistance(const std::vector<float> &pts, int dim, uint32_t n) {
     return best;
 }
 
-}  // namespace
+} // namespace
 
 BOOST_AUTO_TEST_CASE(exact_count_range_and_determinism) {
     for (int g = 0; g < 2; ++g)
         for (int dim = 1; dim <= 3; ++dim)
             for (uint32_t n : kSizes) {
-                if (g == 1 && dim == 3 && n > 1024) continue;  // the baseline is slow in 3D; covered below
+                if (g == 1 && dim == 3 && n > 1024) continue; // the baseline is slow in 3D; covered below
                 const std::vector<float> a = kGenerators[g](dim, n, 12345);
                 checkSet(a, dim, n, kGeneratorNames[g]);
                 const std::vector<float> b = kGenerators[g](dim, n, 12345);
                 BOOST_TEST_CONTEXT(kGeneratorNames[g] << " dim " << dim << " n " << n) {
-                    BOOST_REQUIRE(a == b);  // bitwise
+                    BOOST_REQUIRE(a == b); // bitwise
                     if (n >= 2) BOOST_CHECK(kGenerators[g](dim, n, 12346) != a);
                 }
             }
 }
 
-BOOST_AUTO_TEST_CASE(baseline_3d_at_4096) {
-    checkSet(generatePoissonSeed(3, 4096, 9), 3, 4096, "poisson-seed");
-}
+BOOST_AUTO_TEST_CASE(baseline_3d_at_4096) { checkSet(generatePoissonSeed(3, 4096, 9), 3, 4096, "poisson-seed"); }
 
 BOOST_AUTO_TEST_CASE(every_n_up_to_64_terminates_in_every_dimension) {
     for (int dim = 1; dim <= 3; ++dim)
@@ -104,8 +102,7 @@ BOOST_AUTO_TEST_CASE(wrapping_never_yields_one) {
     // x - floor(x) rounds to 1.0f for tiny negative x: the helpers must not.
     for (float x : {-1e-9f, -1e-30f, -0.0f, 1.0f, 2.0f, -1.0f, 0x1.fffffep-1f, 1.0f + 1e-7f})
         BOOST_CHECK(wrapUnit(x) >= 0.0f && wrapUnit(x) < 1.0f);
-    for (double x : {1.0, 0.99999999999, 1.5, -1e-12})
-        BOOST_CHECK(clampBelowOne(x) >= 0.0f && clampBelowOne(x) < 1.0f);
+    for (double x : {1.0, 0.99999999999, 1.5, -1e-12}) BOOST_CHECK(clampBelowOne(x) >= 0.0f && clampBelowOne(x) < 1.0f);
 }
 
 BOOST_AUTO_TEST_CASE(relative_radius_of_known_lattices) {
@@ -141,7 +138,7 @@ BOOST_AUTO_TEST_CASE(relative_radius_matches_brute_force) {
     // Clustered and spread sets, every dimension: the grid search must agree with the O(n^2) reference.
     for (int dim = 1; dim <= 3; ++dim)
         for (uint32_t n : {2u, 3u, 17u, 500u}) {
-            for (const std::vector<float> &pts : {generatePoissonSeed(dim, n, 3), generatePoisson(dim, n, 3)}) {
+            for (const std::vector<float>& pts : {generatePoissonSeed(dim, n, 3), generatePoisson(dim, n, 3)}) {
                 double expect = bruteMinDistance(pts, dim, n) / maxPackingDistance(dim, n);
                 BOOST_TEST_CONTEXT("dim " << dim << " n " << n) {
                     BOOST_CHECK_CLOSE(relativeRadius(dim, pts.data(), n), expect, 1e-4);
@@ -149,7 +146,8 @@ BOOST_AUTO_TEST_CASE(relative_radius_matches_brute_force) {
             }
             // A clustered set: all points in a corner of side 0.01.
             std::vector<float> clustered;
-            for (uint32_t i = 0; i < n * dim; ++i) clustered.push_back(0.01f * float((i * 2654435761u) % 1000) / 1000.0f);
+            for (uint32_t i = 0; i < n * dim; ++i)
+                clustered.push_back(0.01f * float((i * 2654435761u) % 1000) / 1000.0f);
             double expect = bruteMinDistance(clustered, dim, n) / maxPackingDistance(dim, n);
             BOOST_CHECK_CLOSE(relativeRadius(dim, clustered.data(), n), expect, 1e-4);
         }

@@ -31,7 +31,7 @@ double seedFloor(int dim) {
     return 0.421875 * r0OverDmax[dim - 1] - 1e-4;
 }
 
-}  // namespace
+} // namespace
 
 BOOST_AUTO_TEST_CASE(rho_per_n_both_generators) {
     for (int dim = 1; dim <= 3; ++dim)
@@ -42,7 +42,7 @@ BOOST_AUTO_TEST_CASE(rho_per_n_both_generators) {
                 std::vector<float> ours = generatePoisson(dim, n, seed);
                 double rho = relativeRadius(dim, ours.data(), n);
                 minOurs = std::min(minOurs, rho);
-                if (dim == 3 && n == 4096) continue;  // the 3D baseline at 4096 is slow; covered at 1024
+                if (dim == 3 && n == 4096) continue; // the 3D baseline at 4096 is slow; covered at 1024
                 std::vector<float> base = generatePoissonSeed(dim, n, seed);
                 double rhoSeed = relativeRadius(dim, base.data(), n);
                 meanSeed += rhoSeed / kSeeds;
@@ -96,7 +96,8 @@ BOOST_AUTO_TEST_CASE(no_clustering_in_4x4_cells) {
                 BOOST_CHECK_LE(std::abs(counts[c] - mean), 12);
                 sumSquares += double(counts[c] - mean) * (counts[c] - mean);
             }
-            BOOST_TEST_CONTEXT("dim " << dim << " seed " << s) BOOST_CHECK_LT(std::sqrt(sumSquares / cells), 0.5 * whiteSd);
+            BOOST_TEST_CONTEXT("dim " << dim << " seed " << s)
+            BOOST_CHECK_LT(std::sqrt(sumSquares / cells), 0.5 * whiteSd);
         }
     }
 }
@@ -124,8 +125,8 @@ BOOST_AUTO_TEST_CASE(isotropic_blue_noise_spectrum) {
     low /= lowCount;
     BOOST_TEST_MESSAGE("periodogram peak " << peak << ", mean power for |k| <= sqrt(N)/2: " << low);
     BOOST_CHECK_LT(peak, 12.0);
-    BOOST_CHECK_LT(low, 0.1);  // white noise: 1
+    BOOST_CHECK_LT(low, 0.1); // white noise: 1
     // Anisotropy per ring within 3 dB of the isotropic floor 10 log10(1/10) = -10 dB (rings with >= 24 cells).
-    for (const auto &ring : spectrum.rings())
+    for (const auto& ring : spectrum.rings())
         if (ring.count >= 24 && ring.radius >= 4) BOOST_CHECK_LT(ring.anisotropy, -7.0);
 }

@@ -25,11 +25,11 @@ BOOST_AUTO_TEST_CASE(concurrent_generation_is_bitwise_serial_generation) {
                 jobs.push_back({false, dim, n, seed});
                 jobs.push_back({true, dim, n, seed});
             }
-    auto run = [](const Job &j) {
+    auto run = [](const Job& j) {
         return j.seedPattern ? generatePoissonSeed(j.dim, j.n, j.seed) : generatePoisson(j.dim, j.n, j.seed);
     };
     std::vector<std::vector<float>> serial;
-    for (const Job &j : jobs) serial.push_back(run(j));
+    for (const Job& j : jobs) serial.push_back(run(j));
 
     constexpr int kThreads = 4;
     std::vector<std::vector<std::vector<float>>> results(kThreads, std::vector<std::vector<float>>(jobs.size()));
@@ -44,7 +44,7 @@ BOOST_AUTO_TEST_CASE(concurrent_generation_is_bitwise_serial_generation) {
                 results[t][i] = run(jobs[i]);
             }
         });
-    for (auto &th : threads) th.join();
+    for (auto& th : threads) th.join();
     for (int t = 0; t < kThreads; ++t)
         for (size_t i = 0; i < jobs.size(); ++i) BOOST_CHECK(results[t][i] == serial[i]);
 }

@@ -19,67 +19,68 @@ namespace {
 double rhoTolerance(double rho) { return 1e-4 * rho + 1e-6; }
 
 void checkServedRho(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixelX) {
-  const uint64_t seed = 31337;
-  auto s = makeSampler(pattern, n, seed, {{arity, 1}});
-  const std::vector<float> served = fillPixel(s.get(), pixelX, 5, 0);
-  BOOST_REQUIRE_EQUAL(served.size(), size_t(n) * arity);
+    const uint64_t seed = 31337;
+    auto s = makeSampler(pattern, n, seed, {{arity, 1}});
+    const std::vector<float> served = fillPixel(s.get(), pixelX, 5, 0);
+    BOOST_REQUIRE_EQUAL(served.size(), size_t(n) * arity);
 
-  std::set<std::tuple<float, float, float>> distinct;
-  for (uint32_t p = 0; p < n; ++p)
-    distinct.insert({served[p * arity], arity > 1 ? served[p * arity + 1] : 0.f, arity > 2 ? served[p * arity + 2] : 0.f});
-  BOOST_CHECK_EQUAL(distinct.size(), n);
+    std::set<std::tuple<float, float, float>> distinct;
+    for (uint32_t p = 0; p < n; ++p)
+        distinct.insert(
+            {served[p * arity], arity > 1 ? served[p * arity + 1] : 0.f, arity > 2 ? served[p * arity + 2] : 0.f});
+    BOOST_CHECK_EQUAL(distinct.size(), n);
 
-  std::vector<float> stored;
-  if (pattern == STIPPLE_PATTERN_POISSON) {
-    const uint64_t key = stipple::setKey(seed, stipple::HashDomain::Poisson, pixelX, 5, 0);
-    auto family = stipple::PoissonCache::global().acquire(arity, n);
-    const uint32_t j = static_cast<uint32_t>(stipple::hashAt(key, 0) % family->setCount());
-    stored.assign(family->set(j), family->set(j) + size_t(n) * arity);
-  } else {
-    const uint64_t key = stipple::setKey(seed, stipple::HashDomain::PoissonSeed, pixelX, 5, 0);
-    stored = stipple::pointsets::generatePoissonSeed(int(arity), n, stipple::hashAt(key, 6));
-  }
-  const double rhoStored = stipple::pointsets::relativeRadius(int(arity), stored.data(), n);
-  const double rhoServed = stipple::pointsets::relativeRadius(int(arity), served.data(), n);
-  BOOST_CHECK_MESSAGE(std::abs(rhoServed - rhoStored) <= rhoTolerance(rhoStored),
-                      patternName(pattern) << " arity " << arity << " N=" << n << ": served rho " << rhoServed
-                                           << ", stored rho " << rhoStored);
+    std::vector<float> stored;
+    if (pattern == STIPPLE_PATTERN_POISSON) {
+        const uint64_t key = stipple::setKey(seed, stipple::HashDomain::Poisson, pixelX, 5, 0);
+        auto family = stipple::PoissonCache::global().acquire(arity, n);
+        const uint32_t j = static_cast<uint32_t>(stipple::hashAt(key, 0) % family->setCount());
+        stored.assign(family->set(j), family->set(j) + size_t(n) * arity);
+    } else {
+        const uint64_t key = stipple::setKey(seed, stipple::HashDomain::PoissonSeed, pixelX, 5, 0);
+        stored = stipple::pointsets::generatePoissonSeed(int(arity), n, stipple::hashAt(key, 6));
+    }
+    const double rhoStored = stipple::pointsets::relativeRadius(int(arity), stored.data(), n);
+    const double rhoServed = stipple::pointsets::relativeRadius(int(arity), served.data(), n);
+    BOOST_CHECK_MESSAGE(std::abs(rhoServed - rhoStored) <= rhoTolerance(rhoStored),
+                        patternName(pattern) << " arity " << arity << " N=" << n << ": served rho " << rhoServed
+                                             << ", stored rho " << rhoStored);
 }
 
-}  // namespace
+} // namespace
 
 BOOST_AUTO_TEST_CASE(served_sets_keep_rho) {
-  for (uint32_t pattern : {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED})
-    for (uint32_t arity = 1; arity <= 3; ++arity)
-      for (uint32_t n : {2u, 13u, 64u, 256u, 1000u})
-        for (uint32_t pixel = 0; pixel < 4; ++pixel) checkServedRho(pattern, arity, n, pixel);
+    for (uint32_t pattern : {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED})
+        for (uint32_t arity = 1; arity <= 3; ++arity)
+            for (uint32_t n : {2u, 13u, 64u, 256u, 1000u})
+                for (uint32_t pixel = 0; pixel < 4; ++pixel) checkServedRho(pattern, arity, n, pixel);
 }
 
 BOOST_AUTO_TEST_CASE(pixels_get_different_sets) {
-  auto s = makeSampler(STIPPLE_PATTERN_POISSON, 64, 1, {{2, 1}});
-  const std::vector<float> a = fillPixel(s.get(), 0, 0, 0), b = fillPixel(s.get(), 1, 0, 0);
-  uint32_t same = 0;
-  for (size_t i = 0; i < a.size(); ++i) same += a[i] == b[i];
-  BOOST_CHECK_LT(same, 4u);
+    auto s = makeSampler(STIPPLE_PATTERN_POISSON, 64, 1, {{2, 1}});
+    const std::vector<float> a = fillPixel(s.get(), 0, 0, 0), b = fillPixel(s.get(), 1, 0, 0);
+    uint32_t same = 0;
+    for (size_t i = 0; i < a.size(); ++i) same += a[i] == b[i];
+    BOOST_CHECK_LT(same, 4u);
 }
 
 BOOST_AUTO_TEST_CASE(cache_stays_within_its_bound) {
-  auto& cache = stipple::PoissonCache::global();
-  // 2D families of >= 8192 points hold 32 sets of >= 64 KiB: about 2 MiB each (capacity, counted before any set
-  // is generated). Acquiring 48 of them (~96 MiB) must evict down to the 64 MiB bound.
-  std::vector<std::shared_ptr<const stipple::PoissonFamily>> held;
-  for (uint32_t i = 0; i < 48; ++i) {
-    auto family = cache.acquire(2, 8192 + i);
-    BOOST_CHECK_EQUAL(family->setCount(), stipple::PoissonCache::setCountFor(2, 8192 + i));
+    auto& cache = stipple::PoissonCache::global();
+    // 2D families of >= 8192 points hold 32 sets of >= 64 KiB: about 2 MiB each (capacity, counted before any set
+    // is generated). Acquiring 48 of them (~96 MiB) must evict down to the 64 MiB bound.
+    std::vector<std::shared_ptr<const stipple::PoissonFamily>> held;
+    for (uint32_t i = 0; i < 48; ++i) {
+        auto family = cache.acquire(2, 8192 + i);
+        BOOST_CHECK_EQUAL(family->setCount(), stipple::PoissonCache::setCountFor(2, 8192 + i));
+        BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
+        if (i < 40) held.push_back(family); // held families cannot be evicted ...
+    }
+    // ... so once the held ones fill the budget, further families are private and the bound still holds.
     BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
-    if (i < 40) held.push_back(family);  // held families cannot be evicted ...
-  }
-  // ... so once the held ones fill the budget, further families are private and the bound still holds.
-  BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
-  BOOST_CHECK_GE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget - 4 * stipple::PoissonCache::kFamilyBytes);
-  held.clear();
-  auto again = cache.acquire(2, 9000);  // now unheld families can be evicted to make room
-  BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
-  BOOST_CHECK_EQUAL(stipple::PoissonCache::setCountFor(2, 1u << 22), 1u);
-  BOOST_CHECK_EQUAL(stipple::PoissonCache::setCountFor(1, 16), stipple::PoissonCache::kMaxSetsPerFamily);
+    BOOST_CHECK_GE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget - 4 * stipple::PoissonCache::kFamilyBytes);
+    held.clear();
+    auto again = cache.acquire(2, 9000); // now unheld families can be evicted to make room
+    BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
+    BOOST_CHECK_EQUAL(stipple::PoissonCache::setCountFor(2, 1u << 22), 1u);
+    BOOST_CHECK_EQUAL(stipple::PoissonCache::setCountFor(1, 16), stipple::PoissonCache::kMaxSetsPerFamily);
 }

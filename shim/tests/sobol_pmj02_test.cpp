@@ -17,7 +17,6 @@
 #include "pmj02_generator.h"
 #include "sampler.h"
 
-
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -34,203 +33,209 @@ namespace {
 uint32_t toFixed(float v) { return static_cast<uint32_t>(double(v) * 4294967296.0); }
 
 std::vector<FixedPoint2> xyOf(const std::vector<float>& values, uint32_t arity) {
-  std::vector<FixedPoint2> points(values.size() / arity);
-  for (size_t i = 0; i < points.size(); ++i) points[i] = {toFixed(values[i * arity]), toFixed(values[i * arity + 1])};
-  return points;
+    std::vector<FixedPoint2> points(values.size() / arity);
+    for (size_t i = 0; i < points.size(); ++i) points[i] = {toFixed(values[i * arity]), toFixed(values[i * arity + 1])};
+    return points;
 }
 
 // The largest j with 2^j <= m.
 uint32_t floorLog2(uint32_t m) { return 31 - static_cast<uint32_t>(__builtin_clz(m)); }
 
 SamplerPtr makeFlagged(uint32_t pattern, uint32_t n, uint64_t seed, uint32_t arity, uint32_t flags) {
-  stipple_dimension_desc d = toDesc({arity, 1});
-  stipple_sampler_desc desc{};
-  desc.struct_size = sizeof desc;
-  desc.pattern = pattern;
-  desc.samples_per_pixel = n;
-  desc.dimension_count = 1;
-  desc.seed = seed;
-  desc.dimensions = &d;
-  desc.flags = flags;
-  stipple_sampler s = nullptr;
-  BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK, stipple_last_error_message());
-  return SamplerPtr(s);
+    stipple_dimension_desc d = toDesc({arity, 1});
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.pattern = pattern;
+    desc.samples_per_pixel = n;
+    desc.dimension_count = 1;
+    desc.seed = seed;
+    desc.dimensions = &d;
+    desc.flags = flags;
+    stipple_sampler s = nullptr;
+    BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK, stipple_last_error_message());
+    return SamplerPtr(s);
 }
 
-}  // namespace
+} // namespace
 
 BOOST_AUTO_TEST_CASE(generator_prefixes_are_elementary_nets) {
-  for (uint64_t seed = 0; seed < 8; ++seed) {
-    const std::vector<FixedPoint2> points = stipple::generatePmj02(12, seed);
-    for (uint32_t k = 0; k <= 12; ++k)
-      BOOST_CHECK_MESSAGE(stipple::isElementaryNet(points.data(), k), "pmj02 seed " << seed << " prefix 2^" << k);
-  }
-  // The checker itself fails on a set that is not a net: two points in one column of 2 x 1.
-  const FixedPoint2 bad[2] = {{0x10000000u, 0x10000000u}, {0x20000000u, 0x90000000u}};
-  BOOST_CHECK(!stipple::isElementaryNet(bad, 1));
+    for (uint64_t seed = 0; seed < 8; ++seed) {
+        const std::vector<FixedPoint2> points = stipple::generatePmj02(12, seed);
+        for (uint32_t k = 0; k <= 12; ++k)
+            BOOST_CHECK_MESSAGE(stipple::isElementaryNet(points.data(), k), "pmj02 seed " << seed << " prefix 2^" << k);
+    }
+    // The checker itself fails on a set that is not a net: two points in one column of 2 x 1.
+    const FixedPoint2 bad[2] = {{0x10000000u, 0x10000000u}, {0x20000000u, 0x90000000u}};
+    BOOST_CHECK(!stipple::isElementaryNet(bad, 1));
 }
 
 BOOST_AUTO_TEST_CASE(served_prefixes_are_elementary_nets) {
-  for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02})
-    for (uint32_t arity : {2u, 3u})
-      for (uint32_t n : {1u, 2u, 16u, 64u, 97u, 256u, 1000u, 4096u})
-        for (uint32_t k : {1u, 3u}) {
-          auto s = makeSampler(pattern, n, 0x5eed + n, {{arity, k}});
-          for (uint32_t pixel = 0; pixel < 3; ++pixel) {
-            const std::vector<FixedPoint2> xy = xyOf(fillPixel(s.get(), pixel, 9, 0), arity);
-            for (uint32_t j = 0; j <= floorLog2(n * k); ++j)
-              BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data(), j),
-                                  patternName(pattern) << " arity " << arity << " N=" << n << " k=" << k
-                                                       << " pixel " << pixel << ": prefix 2^" << j << " not a net");
-          }
-        }
+    for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02})
+        for (uint32_t arity : {2u, 3u})
+            for (uint32_t n : {1u, 2u, 16u, 64u, 97u, 256u, 1000u, 4096u})
+                for (uint32_t k : {1u, 3u}) {
+                    auto s = makeSampler(pattern, n, 0x5eed + n, {{arity, k}});
+                    for (uint32_t pixel = 0; pixel < 3; ++pixel) {
+                        const std::vector<FixedPoint2> xy = xyOf(fillPixel(s.get(), pixel, 9, 0), arity);
+                        for (uint32_t j = 0; j <= floorLog2(n * k); ++j)
+                            BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data(), j),
+                                                patternName(pattern)
+                                                    << " arity " << arity << " N=" << n << " k=" << k << " pixel "
+                                                    << pixel << ": prefix 2^" << j << " not a net");
+                    }
+                }
 }
 
 BOOST_AUTO_TEST_CASE(one_dimensional_prefixes_are_stratified) {
-  for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02}) {
-    auto s = makeSampler(pattern, 1024, 3, {{1, 1}, {3, 1}});
-    for (uint32_t d = 0; d < 2; ++d) {
-      const uint32_t arity = d == 0 ? 1 : 3;
-      const std::vector<float> v = fillPixel(s.get(), 4, 4, d);
-      for (uint32_t c = 0; c < arity; ++c)
-        for (uint32_t j = 0; j <= 10; ++j) {
-          std::set<uint32_t> strata;
-          for (uint32_t i = 0; i < (1u << j); ++i) strata.insert(j == 0 ? 0u : toFixed(v[i * arity + c]) >> (32 - j));
-          BOOST_CHECK_MESSAGE(strata.size() == (1u << j),
-                              patternName(pattern) << " dimension " << d << " axis " << c << ": prefix 2^" << j
-                                                   << " fills " << strata.size() << " strata");
+    for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02}) {
+        auto s = makeSampler(pattern, 1024, 3, {{1, 1}, {3, 1}});
+        for (uint32_t d = 0; d < 2; ++d) {
+            const uint32_t arity = d == 0 ? 1 : 3;
+            const std::vector<float> v = fillPixel(s.get(), 4, 4, d);
+            for (uint32_t c = 0; c < arity; ++c)
+                for (uint32_t j = 0; j <= 10; ++j) {
+                    std::set<uint32_t> strata;
+                    for (uint32_t i = 0; i < (1u << j); ++i)
+                        strata.insert(j == 0 ? 0u : toFixed(v[i * arity + c]) >> (32 - j));
+                    BOOST_CHECK_MESSAGE(strata.size() == (1u << j),
+                                        patternName(pattern) << " dimension " << d << " axis " << c << ": prefix 2^"
+                                                             << j << " fills " << strata.size() << " strata");
+                }
         }
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(points_past_the_set_continue_the_sequence) {
-  // Through the internal Sampler (the C API of this version serves sample indices < N only).
-  for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02})
-    for (uint32_t n : {16u, 256u, 97u}) {
-      auto handle = makeSampler(pattern, n, 77, {{2, 1}});
-      const stipple::Sampler& sampler = *stipple::fromHandle(handle.get());
-      std::vector<float> values(size_t(4) * n * 2);
-      for (uint32_t i = 0; i < 4 * n; ++i) sampler.sample(5, 6, i, 0, values.data() + size_t(i) * 2);
-      // Block 0 is the set itself.
-      const std::vector<float> set = fillPixel(handle.get(), 5, 6, 0);
-      BOOST_CHECK(std::memcmp(set.data(), values.data(), set.size() * sizeof(float)) == 0);
-      const std::vector<FixedPoint2> xy = xyOf(values, 2);
-      const uint32_t j = floorLog2(n);
-      for (uint32_t b = 0; b < 4; ++b)
-        BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data() + size_t(b) * n, j),
-                            patternName(pattern) << " N=" << n << " block " << b << ": prefix 2^" << j);
-      if (pattern == STIPPLE_PATTERN_SOBOL && (n & (n - 1)) == 0)
-        for (uint32_t b = 0; b < 4; b += 2)
-          BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data() + size_t(b) * n, j + 1),
-                              "sobol N=" << n << ": blocks " << b << " and " << b + 1 << " are not one net");
-    }
+    // Through the internal Sampler (the C API of this version serves sample indices < N only).
+    for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02})
+        for (uint32_t n : {16u, 256u, 97u}) {
+            auto handle = makeSampler(pattern, n, 77, {{2, 1}});
+            const stipple::Sampler& sampler = *stipple::fromHandle(handle.get());
+            std::vector<float> values(size_t(4) * n * 2);
+            for (uint32_t i = 0; i < 4 * n; ++i) sampler.sample(5, 6, i, 0, values.data() + size_t(i) * 2);
+            // Block 0 is the set itself.
+            const std::vector<float> set = fillPixel(handle.get(), 5, 6, 0);
+            BOOST_CHECK(std::memcmp(set.data(), values.data(), set.size() * sizeof(float)) == 0);
+            const std::vector<FixedPoint2> xy = xyOf(values, 2);
+            const uint32_t j = floorLog2(n);
+            for (uint32_t b = 0; b < 4; ++b)
+                BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data() + size_t(b) * n, j),
+                                    patternName(pattern) << " N=" << n << " block " << b << ": prefix 2^" << j);
+            if (pattern == STIPPLE_PATTERN_SOBOL && (n & (n - 1)) == 0)
+                for (uint32_t b = 0; b < 4; b += 2)
+                    BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data() + size_t(b) * n, j + 1),
+                                        "sobol N=" << n << ": blocks " << b << " and " << b + 1 << " are not one net");
+        }
 }
 
 BOOST_AUTO_TEST_CASE(pmj02_sets_above_its_limit_are_a_clear_error) {
-  stipple_dimension_desc d = toDesc({2, 2});
-  stipple_sampler_desc desc{};
-  desc.struct_size = sizeof desc;
-  desc.pattern = STIPPLE_PATTERN_PMJ02;
-  desc.samples_per_pixel = 65536;
-  desc.dimension_count = 1;
-  desc.dimensions = &d;
-  stipple_sampler s = nullptr;
-  BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_ERROR_OUT_OF_RANGE);
-  BOOST_CHECK(std::string(stipple_last_error_message()).find("pmj02 pattern serves sets of at most 65536") !=
-              std::string::npos);
+    stipple_dimension_desc d = toDesc({2, 2});
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.pattern = STIPPLE_PATTERN_PMJ02;
+    desc.samples_per_pixel = 65536;
+    desc.dimension_count = 1;
+    desc.dimensions = &d;
+    stipple_sampler s = nullptr;
+    BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_ERROR_OUT_OF_RANGE);
+    BOOST_CHECK(std::string(stipple_last_error_message()).find("pmj02 pattern serves sets of at most 65536") !=
+                std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(blue_noise_keeps_every_pixel_valid_and_deterministic) {
-  for (uint32_t pattern : kAllPatterns)
-    for (uint32_t arity : {1u, 2u, 3u})
-      for (uint32_t n : {1u, 13u, 64u}) {
-        auto s = makeFlagged(pattern, n, 0xb1, arity, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
-        for (uint32_t px : {0u, 63u, 64u, 4000000000u}) {
-          const std::vector<float> a = fillPixel(s.get(), px, 17, 0), b = fillPixel(s.get(), px, 17, 0);
-          BOOST_CHECK(a == b);
-          for (float v : a) BOOST_REQUIRE_MESSAGE(v >= 0.0f && v < 1.0f, patternName(pattern) << " value " << v);
-          std::vector<float> one(arity);
-          for (uint32_t i = 0; i < n; ++i) {
-            BOOST_REQUIRE_EQUAL(stipple_sampler_sample(s.get(), px, 17, i, 0, one.data(), one.size()), STIPPLE_OK);
-            BOOST_CHECK_MESSAGE(std::memcmp(one.data(), a.data() + size_t(i) * arity, arity * sizeof(float)) == 0,
-                                patternName(pattern) << " arity " << arity << " N=" << n << " sample " << i);
-          }
-        }
-      }
+    for (uint32_t pattern : kAllPatterns)
+        for (uint32_t arity : {1u, 2u, 3u})
+            for (uint32_t n : {1u, 13u, 64u}) {
+                auto s = makeFlagged(pattern, n, 0xb1, arity, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
+                for (uint32_t px : {0u, 63u, 64u, 4000000000u}) {
+                    const std::vector<float> a = fillPixel(s.get(), px, 17, 0), b = fillPixel(s.get(), px, 17, 0);
+                    BOOST_CHECK(a == b);
+                    for (float v : a)
+                        BOOST_REQUIRE_MESSAGE(v >= 0.0f && v < 1.0f, patternName(pattern) << " value " << v);
+                    std::vector<float> one(arity);
+                    for (uint32_t i = 0; i < n; ++i) {
+                        BOOST_REQUIRE_EQUAL(stipple_sampler_sample(s.get(), px, 17, i, 0, one.data(), one.size()),
+                                            STIPPLE_OK);
+                        BOOST_CHECK_MESSAGE(
+                            std::memcmp(one.data(), a.data() + size_t(i) * arity, arity * sizeof(float)) == 0,
+                            patternName(pattern) << " arity " << arity << " N=" << n << " sample " << i);
+                    }
+                }
+            }
 }
 
 BOOST_AUTO_TEST_CASE(blue_noise_stratifies_a_quad_of_pixels) {
-  // stratified 2D, N = 16 (a 4 x 4 grid): each pixel one point per stratum; a 2 x 2 quad puts the four points of
-  // every stratum in its four quarters.
-  auto s = makeFlagged(STIPPLE_PATTERN_STRATIFIED, 16, 5, 2, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
-  for (uint32_t qx : {0u, 2u, 62u, 64u})
-    for (uint32_t qy : {0u, 6u}) {
-      std::set<std::pair<uint32_t, uint32_t>> quarters;
-      for (uint32_t p = 0; p < 4; ++p) {
-        const std::vector<float> v = fillPixel(s.get(), qx + (p & 1), qy + (p >> 1), 0);
-        std::set<uint32_t> strata;
-        for (uint32_t i = 0; i < 16; ++i) {
-          const uint32_t cx = uint32_t(v[2 * i] * 8), cy = uint32_t(v[2 * i + 1] * 8);  // quarter-strata
-          strata.insert((cy / 2) * 4 + cx / 2);
-          quarters.insert({cx, cy});
+    // stratified 2D, N = 16 (a 4 x 4 grid): each pixel one point per stratum; a 2 x 2 quad puts the four points of
+    // every stratum in its four quarters.
+    auto s = makeFlagged(STIPPLE_PATTERN_STRATIFIED, 16, 5, 2, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
+    for (uint32_t qx : {0u, 2u, 62u, 64u})
+        for (uint32_t qy : {0u, 6u}) {
+            std::set<std::pair<uint32_t, uint32_t>> quarters;
+            for (uint32_t p = 0; p < 4; ++p) {
+                const std::vector<float> v = fillPixel(s.get(), qx + (p & 1), qy + (p >> 1), 0);
+                std::set<uint32_t> strata;
+                for (uint32_t i = 0; i < 16; ++i) {
+                    const uint32_t cx = uint32_t(v[2 * i] * 8), cy = uint32_t(v[2 * i + 1] * 8); // quarter-strata
+                    strata.insert((cy / 2) * 4 + cx / 2);
+                    quarters.insert({cx, cy});
+                }
+                BOOST_CHECK_EQUAL(strata.size(), 16u);
+            }
+            BOOST_CHECK_MESSAGE(quarters.size() == 64u, "quad at " << qx << "," << qy << " fills " << quarters.size()
+                                                                   << " of 64 quarter-strata");
         }
-        BOOST_CHECK_EQUAL(strata.size(), 16u);
-      }
-      BOOST_CHECK_MESSAGE(quarters.size() == 64u, "quad at " << qx << "," << qy << " fills " << quarters.size()
-                                                             << " of 64 quarter-strata");
+    // sobol 2D, N = 64: each pixel a (0,6,2)-net, the quad's 256 points a (0,8,2)-net.
+    auto z = makeFlagged(STIPPLE_PATTERN_SOBOL, 64, 5, 2, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
+    for (uint32_t qx : {0u, 2u, 254u, 256u}) {
+        std::vector<FixedPoint2> quad;
+        for (uint32_t p = 0; p < 4; ++p) {
+            const std::vector<FixedPoint2> xy = xyOf(fillPixel(z.get(), qx + (p & 1), 8 + (p >> 1), 0), 2);
+            BOOST_CHECK(stipple::isElementaryNet(xy.data(), 6));
+            quad.insert(quad.end(), xy.begin(), xy.end());
+        }
+        BOOST_CHECK_MESSAGE(stipple::isElementaryNet(quad.data(), 8), "sobol quad at x = " << qx << " is not a net");
     }
-  // sobol 2D, N = 64: each pixel a (0,6,2)-net, the quad's 256 points a (0,8,2)-net.
-  auto z = makeFlagged(STIPPLE_PATTERN_SOBOL, 64, 5, 2, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
-  for (uint32_t qx : {0u, 2u, 254u, 256u}) {
-    std::vector<FixedPoint2> quad;
-    for (uint32_t p = 0; p < 4; ++p) {
-      const std::vector<FixedPoint2> xy = xyOf(fillPixel(z.get(), qx + (p & 1), 8 + (p >> 1), 0), 2);
-      BOOST_CHECK(stipple::isElementaryNet(xy.data(), 6));
-      quad.insert(quad.end(), xy.begin(), xy.end());
-    }
-    BOOST_CHECK_MESSAGE(stipple::isElementaryNet(quad.data(), 8), "sobol quad at x = " << qx << " is not a net");
-  }
 }
 
 BOOST_AUTO_TEST_CASE(blue_noise_samples_are_uniform_and_unbiased) {
-  constexpr int kTests = kPatternCount * 2 * 2;
-  const double alpha = sidak(0.01, kTests);
-  for (uint32_t pattern : kAllPatterns)
-    for (uint32_t arity : {2u, 3u}) {
-      const uint32_t n = pattern == STIPPLE_PATTERN_POISSON_SEED ? 7 : 16;
-      auto s = makeFlagged(pattern, n, 0x0b1e + arity, arity, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
-      // chi-square: sample n/2 of 3200 pixels (a 80 x 40 block, so neighbours share tiles) on 64 cells.
-      const uint32_t bins = arity == 2 ? 8 : 4;
-      std::vector<double> observed(64, 0.0), expected(64, 3200.0 / 64);
-      std::vector<float> one(arity);
-      for (uint32_t p = 0; p < 3200; ++p) {
-        BOOST_REQUIRE_EQUAL(stipple_sampler_sample(s.get(), p % 80, p / 80, n / 2, 0, one.data(), one.size()),
-                            STIPPLE_OK);
-        uint32_t cell = 0;
-        for (uint32_t c = 0; c < arity; ++c) cell = cell * bins + uint32_t(one[c] * bins);
-        observed[cell] += 1;
-      }
-      const ChiSquareResult r = chiSquareTest(observed, expected);
-      BOOST_CHECK_MESSAGE(r.pValue > alpha, patternName(pattern) << " arity " << arity << ": chi2 = " << r.statistic
-                                                                 << ", p = " << r.pValue);
-      // t-test of the quarter disk (2D) / sphere octant (3D) over 512 pixel estimates.
-      const double exact = arity == 2 ? std::numbers::pi / 4 : std::numbers::pi / 6;
-      double sum = 0, sumSq = 0;
-      for (uint32_t p = 0; p < 512; ++p) {
-        const std::vector<float> v = fillPixel(s.get(), p % 32, p / 32, 0);
-        double hits = 0;
-        for (uint32_t i = 0; i < n; ++i) {
-          double r2 = 0;
-          for (uint32_t c = 0; c < arity; ++c) r2 += double(v[i * arity + c]) * v[i * arity + c];
-          hits += r2 < 1.0;
+    constexpr int kTests = kPatternCount * 2 * 2;
+    const double alpha = sidak(0.01, kTests);
+    for (uint32_t pattern : kAllPatterns)
+        for (uint32_t arity : {2u, 3u}) {
+            const uint32_t n = pattern == STIPPLE_PATTERN_POISSON_SEED ? 7 : 16;
+            auto s = makeFlagged(pattern, n, 0x0b1e + arity, arity, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
+            // chi-square: sample n/2 of 3200 pixels (a 80 x 40 block, so neighbours share tiles) on 64 cells.
+            const uint32_t bins = arity == 2 ? 8 : 4;
+            std::vector<double> observed(64, 0.0), expected(64, 3200.0 / 64);
+            std::vector<float> one(arity);
+            for (uint32_t p = 0; p < 3200; ++p) {
+                BOOST_REQUIRE_EQUAL(stipple_sampler_sample(s.get(), p % 80, p / 80, n / 2, 0, one.data(), one.size()),
+                                    STIPPLE_OK);
+                uint32_t cell = 0;
+                for (uint32_t c = 0; c < arity; ++c) cell = cell * bins + uint32_t(one[c] * bins);
+                observed[cell] += 1;
+            }
+            const ChiSquareResult r = chiSquareTest(observed, expected);
+            BOOST_CHECK_MESSAGE(r.pValue > alpha, patternName(pattern) << " arity " << arity << ": chi2 = "
+                                                                       << r.statistic << ", p = " << r.pValue);
+            // t-test of the quarter disk (2D) / sphere octant (3D) over 512 pixel estimates.
+            const double exact = arity == 2 ? std::numbers::pi / 4 : std::numbers::pi / 6;
+            double sum = 0, sumSq = 0;
+            for (uint32_t p = 0; p < 512; ++p) {
+                const std::vector<float> v = fillPixel(s.get(), p % 32, p / 32, 0);
+                double hits = 0;
+                for (uint32_t i = 0; i < n; ++i) {
+                    double r2 = 0;
+                    for (uint32_t c = 0; c < arity; ++c) r2 += double(v[i * arity + c]) * v[i * arity + c];
+                    hits += r2 < 1.0;
+                }
+                const double e = hits / n - exact;
+                sum += e, sumSq += e * e;
+            }
+            const double mean = sum / 512, sd = std::sqrt((sumSq - 512 * mean * mean) / 511);
+            const double t = mean / (sd / std::sqrt(512.0));
+            const double p = studentTwoSidedP(t, 511);
+            BOOST_CHECK_MESSAGE(p > alpha, patternName(pattern)
+                                               << " arity " << arity << ": t = " << t << ", p = " << p);
         }
-        const double e = hits / n - exact;
-        sum += e, sumSq += e * e;
-      }
-      const double mean = sum / 512, sd = std::sqrt((sumSq - 512 * mean * mean) / 511);
-      const double t = mean / (sd / std::sqrt(512.0));
-      const double p = studentTwoSidedP(t, 511);
-      BOOST_CHECK_MESSAGE(p > alpha, patternName(pattern) << " arity " << arity << ": t = " << t << ", p = " << p);
-    }
 }

@@ -31,184 +31,191 @@ constexpr float kBelowOne = 0x1.fffffep-1f;
 
 // Counts values outside [0, 1) or non-finite; reports the first offender.
 size_t countBadValues(const std::vector<float>& v, const std::string& what) {
-  size_t bad = 0;
-  for (size_t i = 0; i < v.size(); ++i) {
-    const float x = v[i];
-    if (!(std::isfinite(x) && x >= 0.0f && x <= kBelowOne)) {
-      if (bad == 0) BOOST_ERROR(what << ": value[" << i << "] = " << x << " outside [0, 1)");
-      ++bad;
+    size_t bad = 0;
+    for (size_t i = 0; i < v.size(); ++i) {
+        const float x = v[i];
+        if (!(std::isfinite(x) && x >= 0.0f && x <= kBelowOne)) {
+            if (bad == 0) BOOST_ERROR(what << ": value[" << i << "] = " << x << " outside [0, 1)");
+            ++bad;
+        }
     }
-  }
-  return bad;
+    return bad;
 }
 
 // Stratified 1D: floor(v * M) over the M = k*N values is a permutation of 0..M-1.
 void checkOnePerStratum(const std::vector<float>& v, const std::string& what) {
-  std::vector<uint8_t> seen(v.size(), 0);
-  size_t collisions = 0;
-  for (float x : v) {
-    const size_t cell = std::min(size_t(double(x) * double(v.size())), v.size() - 1);
-    collisions += seen[cell]++ != 0;
-  }
-  BOOST_CHECK_MESSAGE(collisions == 0, what << ": " << collisions << " strata hold more than one value");
+    std::vector<uint8_t> seen(v.size(), 0);
+    size_t collisions = 0;
+    for (float x : v) {
+        const size_t cell = std::min(size_t(double(x) * double(v.size())), v.size() - 1);
+        collisions += seen[cell]++ != 0;
+    }
+    BOOST_CHECK_MESSAGE(collisions == 0, what << ": " << collisions << " strata hold more than one value");
 }
 
 // Every value of one pixel through fill_pixel, checked; sample() must agree for the first and last sample.
 void checkPixel(stipple_sampler s, uint32_t n, uint32_t arity, uint32_t k, uint32_t x, uint32_t y,
                 const std::string& what) {
-  const std::vector<float> all = fillPixel(s, x, y, 0);
-  BOOST_REQUIRE_EQUAL(all.size(), size_t(n) * k * arity);
-  countBadValues(all, what);
-  for (uint32_t i : {0u, n - 1}) {
-    std::vector<float> one(size_t(k) * arity, -1.0f);
-    BOOST_REQUIRE_MESSAGE(stipple_sampler_sample(s, x, y, i, 0, one.data(), one.size()) == STIPPLE_OK,
-                          what << ": " << stipple_last_error_message());
-    BOOST_CHECK_MESSAGE(std::memcmp(one.data(), all.data() + size_t(i) * k * arity, one.size() * sizeof(float)) == 0,
-                        what << ": sample(" << i << ") differs from fill_pixel");
-  }
-  // Past the layout, with the largest sample index and stream.
-  float extra[7];
-  BOOST_REQUIRE_EQUAL(stipple_sampler_sample_independent(s, x, y, n - 1, kMax32, extra, 7), STIPPLE_OK);
-  countBadValues(std::vector<float>(extra, extra + 7), what + " independent stream");
+    const std::vector<float> all = fillPixel(s, x, y, 0);
+    BOOST_REQUIRE_EQUAL(all.size(), size_t(n) * k * arity);
+    countBadValues(all, what);
+    for (uint32_t i : {0u, n - 1}) {
+        std::vector<float> one(size_t(k) * arity, -1.0f);
+        BOOST_REQUIRE_MESSAGE(stipple_sampler_sample(s, x, y, i, 0, one.data(), one.size()) == STIPPLE_OK,
+                              what << ": " << stipple_last_error_message());
+        BOOST_CHECK_MESSAGE(std::memcmp(one.data(), all.data() + size_t(i) * k * arity, one.size() * sizeof(float)) ==
+                                0,
+                            what << ": sample(" << i << ") differs from fill_pixel");
+    }
+    // Past the layout, with the largest sample index and stream.
+    float extra[7];
+    BOOST_REQUIRE_EQUAL(stipple_sampler_sample_independent(s, x, y, n - 1, kMax32, extra, 7), STIPPLE_OK);
+    countBadValues(std::vector<float>(extra, extra + 7), what + " independent stream");
 }
 
 std::string label(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k, uint64_t seed, uint32_t x, uint32_t y) {
-  return std::string(patternName(pattern)) + " N=" + std::to_string(n) + " arity=" + std::to_string(arity) +
-         " k=" + std::to_string(k) + " seed=" + std::to_string(seed) + " pixel=(" + std::to_string(x) + "," +
-         std::to_string(y) + ")";
+    return std::string(patternName(pattern)) + " N=" + std::to_string(n) + " arity=" + std::to_string(arity) +
+           " k=" + std::to_string(k) + " seed=" + std::to_string(seed) + " pixel=(" + std::to_string(x) + "," +
+           std::to_string(y) + ")";
 }
 
 stipple_status tryCreate(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t count, stipple_sampler* out) {
-  stipple_dimension_desc d = toDesc({arity, count, nullptr});
-  stipple_sampler_desc desc{};
-  desc.struct_size = sizeof desc;
-  desc.pattern = pattern;
-  desc.samples_per_pixel = n;
-  desc.dimension_count = 1;
-  desc.dimensions = &d;
-  return stipple_sampler_create(&desc, out);
+    stipple_dimension_desc d = toDesc({arity, count, nullptr});
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.pattern = pattern;
+    desc.samples_per_pixel = n;
+    desc.dimension_count = 1;
+    desc.dimensions = &d;
+    return stipple_sampler_create(&desc, out);
 }
 
-}  // namespace
+} // namespace
 
 BOOST_AUTO_TEST_CASE(small_and_prime_n_every_pattern_arity_seed_and_corner_pixel) {
-  // N = 1, 2, 3, small primes, a square, and primes around powers of two (padded stratified grids).
-  for (uint32_t n : {1u, 2u, 3u, 5u, 7u, 13u, 16u, 31u, 97u, 257u, 1021u}) {
-    for (uint32_t pattern : kAllPatterns) {
-      for (uint32_t arity : {1u, 2u, 3u}) {
-        for (uint64_t seed : kSeeds) {
-          auto s = makeSampler(pattern, n, seed, {{arity, 1, "d"}});
-          for (const auto& p : kPixels) {
-            const std::string what = label(pattern, n, arity, 1, seed, p[0], p[1]);
-            checkPixel(s.get(), n, arity, 1, p[0], p[1], what);
-            if (pattern == STIPPLE_PATTERN_STRATIFIED && arity == 1) checkOnePerStratum(fillPixel(s.get(), p[0], p[1], 0), what);
-          }
+    // N = 1, 2, 3, small primes, a square, and primes around powers of two (padded stratified grids).
+    for (uint32_t n : {1u, 2u, 3u, 5u, 7u, 13u, 16u, 31u, 97u, 257u, 1021u}) {
+        for (uint32_t pattern : kAllPatterns) {
+            for (uint32_t arity : {1u, 2u, 3u}) {
+                for (uint64_t seed : kSeeds) {
+                    auto s = makeSampler(pattern, n, seed, {{arity, 1, "d"}});
+                    for (const auto& p : kPixels) {
+                        const std::string what = label(pattern, n, arity, 1, seed, p[0], p[1]);
+                        checkPixel(s.get(), n, arity, 1, p[0], p[1], what);
+                        if (pattern == STIPPLE_PATTERN_STRATIFIED && arity == 1)
+                            checkOnePerStratum(fillPixel(s.get(), p[0], p[1], 0), what);
+                    }
+                }
+            }
         }
-      }
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(k_values_per_sample_at_the_set_size_limit_edges) {
-  // k = 3 with prime N, and k * N just below / at the set size limit for the cheap patterns.
-  for (uint32_t pattern : kAllPatterns) {
-    auto s = makeSampler(pattern, 13, ~uint64_t(0), {{2, 3, "k3"}});
-    checkPixel(s.get(), 13, 2, 3, kMax32, kMax32, label(pattern, 13, 2, 3, ~uint64_t(0), kMax32, kMax32));
-  }
-  for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED}) {
-    auto s = makeSampler(pattern, 4096, 0, {{1, STIPPLE_MAX_VALUES_PER_SAMPLE, "kmax"}});  // k*N = 2^22 exactly
-    const std::vector<float> v = fillPixel(s.get(), kMax31, 0, 0);
-    countBadValues(v, std::string(patternName(pattern)) + " k*N = 2^22");
-    if (pattern == STIPPLE_PATTERN_STRATIFIED) checkOnePerStratum(v, "stratified k*N = 2^22");
-  }
+    // k = 3 with prime N, and k * N just below / at the set size limit for the cheap patterns.
+    for (uint32_t pattern : kAllPatterns) {
+        auto s = makeSampler(pattern, 13, ~uint64_t(0), {{2, 3, "k3"}});
+        checkPixel(s.get(), 13, 2, 3, kMax32, kMax32, label(pattern, 13, 2, 3, ~uint64_t(0), kMax32, kMax32));
+    }
+    for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED}) {
+        auto s = makeSampler(pattern, 4096, 0, {{1, STIPPLE_MAX_VALUES_PER_SAMPLE, "kmax"}}); // k*N = 2^22 exactly
+        const std::vector<float> v = fillPixel(s.get(), kMax31, 0, 0);
+        countBadValues(v, std::string(patternName(pattern)) + " k*N = 2^22");
+        if (pattern == STIPPLE_PATTERN_STRATIFIED) checkOnePerStratum(v, "stratified k*N = 2^22");
+    }
 }
 
 BOOST_AUTO_TEST_CASE(maximum_n_for_independent_and_stratified) {
-  const uint32_t n = STIPPLE_MAX_SAMPLES_PER_PIXEL;
-  for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED}) {
-    for (uint32_t arity : {1u, 2u, 3u}) {
-      const auto t0 = std::chrono::steady_clock::now();
-      auto s = makeSampler(pattern, n, ~uint64_t(0), {{arity, 1, nullptr}});
-      const std::string what = label(pattern, n, arity, 1, ~uint64_t(0), kMax32, kMax32);
-      checkPixel(s.get(), n, arity, 1, kMax32, kMax32, what);
-      if (pattern == STIPPLE_PATTERN_STRATIFIED && arity == 1) checkOnePerStratum(fillPixel(s.get(), kMax32, kMax32, 0), what);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      BOOST_TEST_MESSAGE(what << ": " << seconds << " s");
+    const uint32_t n = STIPPLE_MAX_SAMPLES_PER_PIXEL;
+    for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED}) {
+        for (uint32_t arity : {1u, 2u, 3u}) {
+            const auto t0 = std::chrono::steady_clock::now();
+            auto s = makeSampler(pattern, n, ~uint64_t(0), {{arity, 1, nullptr}});
+            const std::string what = label(pattern, n, arity, 1, ~uint64_t(0), kMax32, kMax32);
+            checkPixel(s.get(), n, arity, 1, kMax32, kMax32, what);
+            if (pattern == STIPPLE_PATTERN_STRATIFIED && arity == 1)
+                checkOnePerStratum(fillPixel(s.get(), kMax32, kMax32, 0), what);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            BOOST_TEST_MESSAGE(what << ": " << seconds << " s");
+        }
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(maximum_n_poisson_patterns_create_and_stream_past_layout) {
-  // Creation validates the layout and acquires the family lazily; generating a 2^20-point set is not done here
-  // (see the cost note at the top). The past-the-layout stream works at any N.
-  for (uint32_t pattern : {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED}) {
-    auto s = makeSampler(pattern, STIPPLE_MAX_SAMPLES_PER_PIXEL, 0, {{2, 1, nullptr}});
-    BOOST_CHECK_EQUAL(floatsPerPixel(s.get(), 0), 2u * STIPPLE_MAX_SAMPLES_PER_PIXEL);
-    std::vector<float> extra(1024);
-    BOOST_REQUIRE_EQUAL(stipple_sampler_sample_independent(s.get(), kMax32, kMax32, STIPPLE_MAX_SAMPLES_PER_PIXEL - 1,
-                                                           kMax32, extra.data(), extra.size()),
-                        STIPPLE_OK);
-    countBadValues(extra, std::string(patternName(pattern)) + " N=2^20 independent stream");
-  }
+    // Creation validates the layout and acquires the family lazily; generating a 2^20-point set is not done here
+    // (see the cost note at the top). The past-the-layout stream works at any N.
+    for (uint32_t pattern : {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED}) {
+        auto s = makeSampler(pattern, STIPPLE_MAX_SAMPLES_PER_PIXEL, 0, {{2, 1, nullptr}});
+        BOOST_CHECK_EQUAL(floatsPerPixel(s.get(), 0), 2u * STIPPLE_MAX_SAMPLES_PER_PIXEL);
+        std::vector<float> extra(1024);
+        BOOST_REQUIRE_EQUAL(stipple_sampler_sample_independent(s.get(), kMax32, kMax32,
+                                                               STIPPLE_MAX_SAMPLES_PER_PIXEL - 1, kMax32, extra.data(),
+                                                               extra.size()),
+                            STIPPLE_OK);
+        countBadValues(extra, std::string(patternName(pattern)) + " N=2^20 independent stream");
+    }
 }
 
 BOOST_AUTO_TEST_CASE(maximum_n_poisson_2d_served) {
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  BOOST_TEST_MESSAGE("skipped under a sanitizer: one 2^20-point relaxation takes minutes there");
-  BOOST_CHECK(true);
+    BOOST_TEST_MESSAGE("skipped under a sanitizer: one 2^20-point relaxation takes minutes there");
+    BOOST_CHECK(true);
 #else
-  const auto t0 = std::chrono::steady_clock::now();
-  const uint32_t n = STIPPLE_MAX_SAMPLES_PER_PIXEL;
-  auto s = makeSampler(STIPPLE_PATTERN_POISSON, n, ~uint64_t(0), {{2, 1, nullptr}});
-  checkPixel(s.get(), n, 2, 1, kMax32, kMax32, label(STIPPLE_PATTERN_POISSON, n, 2, 1, ~uint64_t(0), kMax32, kMax32));
-  BOOST_TEST_MESSAGE("poisson N=2^20 arity 2: "
-                     << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s");
+    const auto t0 = std::chrono::steady_clock::now();
+    const uint32_t n = STIPPLE_MAX_SAMPLES_PER_PIXEL;
+    auto s = makeSampler(STIPPLE_PATTERN_POISSON, n, ~uint64_t(0), {{2, 1, nullptr}});
+    checkPixel(s.get(), n, 2, 1, kMax32, kMax32, label(STIPPLE_PATTERN_POISSON, n, 2, 1, ~uint64_t(0), kMax32, kMax32));
+    BOOST_TEST_MESSAGE("poisson N=2^20 arity 2: "
+                       << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s");
 #endif
 }
 
 BOOST_AUTO_TEST_CASE(poisson_patterns_at_a_prime_above_4096) {
-  for (uint32_t pattern : {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED}) {
-    for (uint32_t arity : {1u, 2u, 3u}) {
-      const auto t0 = std::chrono::steady_clock::now();
-      auto s = makeSampler(pattern, 4099, ~uint64_t(0), {{arity, 1, nullptr}});
-      checkPixel(s.get(), 4099, arity, 1, kMax32, kMax31, label(pattern, 4099, arity, 1, ~uint64_t(0), kMax32, kMax31));
-      BOOST_TEST_MESSAGE(patternName(pattern) << " N=4099 arity " << arity << ": "
-                         << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s");
+    for (uint32_t pattern : {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED}) {
+        for (uint32_t arity : {1u, 2u, 3u}) {
+            const auto t0 = std::chrono::steady_clock::now();
+            auto s = makeSampler(pattern, 4099, ~uint64_t(0), {{arity, 1, nullptr}});
+            checkPixel(s.get(), 4099, arity, 1, kMax32, kMax31,
+                       label(pattern, 4099, arity, 1, ~uint64_t(0), kMax32, kMax31));
+            BOOST_TEST_MESSAGE(patternName(pattern)
+                               << " N=4099 arity " << arity << ": "
+                               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s");
+        }
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(n_above_maximum_and_zero_are_clear_errors) {
-  for (uint32_t pattern : kAllPatterns) {
-    for (uint32_t n : {0u, STIPPLE_MAX_SAMPLES_PER_PIXEL + 1, kMax32}) {
-      stipple_sampler s = reinterpret_cast<stipple_sampler>(uintptr_t(1));
-      BOOST_CHECK_EQUAL(tryCreate(pattern, n, 2, 1, &s), STIPPLE_ERROR_OUT_OF_RANGE);
-      const std::string message = stipple_last_error_message();
-      BOOST_CHECK_MESSAGE(message.find("samples_per_pixel") != std::string::npos &&
-                              message.find(std::to_string(n)) != std::string::npos,
-                          "message \"" << message << "\" should name samples_per_pixel and " << n);
+    for (uint32_t pattern : kAllPatterns) {
+        for (uint32_t n : {0u, STIPPLE_MAX_SAMPLES_PER_PIXEL + 1, kMax32}) {
+            stipple_sampler s = reinterpret_cast<stipple_sampler>(uintptr_t(1));
+            BOOST_CHECK_EQUAL(tryCreate(pattern, n, 2, 1, &s), STIPPLE_ERROR_OUT_OF_RANGE);
+            const std::string message = stipple_last_error_message();
+            BOOST_CHECK_MESSAGE(message.find("samples_per_pixel") != std::string::npos &&
+                                    message.find(std::to_string(n)) != std::string::npos,
+                                "message \"" << message << "\" should name samples_per_pixel and " << n);
+        }
+        // k * N above the set size limit, with N itself allowed.
+        stipple_sampler s = nullptr;
+        BOOST_CHECK_EQUAL(tryCreate(pattern, STIPPLE_MAX_SAMPLES_PER_PIXEL, 1, 5, &s), STIPPLE_ERROR_OUT_OF_RANGE);
+        BOOST_CHECK(std::string(stipple_last_error_message()).find("STIPPLE_MAX_SET_SIZE") != std::string::npos);
+        BOOST_CHECK_EQUAL(tryCreate(pattern, 1, 1, STIPPLE_MAX_VALUES_PER_SAMPLE + 1, &s), STIPPLE_ERROR_OUT_OF_RANGE);
     }
-    // k * N above the set size limit, with N itself allowed.
-    stipple_sampler s = nullptr;
-    BOOST_CHECK_EQUAL(tryCreate(pattern, STIPPLE_MAX_SAMPLES_PER_PIXEL, 1, 5, &s), STIPPLE_ERROR_OUT_OF_RANGE);
-    BOOST_CHECK(std::string(stipple_last_error_message()).find("STIPPLE_MAX_SET_SIZE") != std::string::npos);
-    BOOST_CHECK_EQUAL(tryCreate(pattern, 1, 1, STIPPLE_MAX_VALUES_PER_SAMPLE + 1, &s), STIPPLE_ERROR_OUT_OF_RANGE);
-  }
 }
 
 BOOST_AUTO_TEST_CASE(sample_index_and_buffer_edges) {
-  auto s = makeSampler(STIPPLE_PATTERN_STRATIFIED, 3, 0, {{3, 1, nullptr}});
-  float out[3];
-  BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 3, 0, out, 3), STIPPLE_ERROR_OUT_OF_RANGE);
-  BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, kMax32, 0, out, 3), STIPPLE_ERROR_OUT_OF_RANGE);
-  BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 2, 0, out, 2), STIPPLE_ERROR_OUT_OF_RANGE);
-  BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 2, kMax32, out, 3), STIPPLE_ERROR_OUT_OF_RANGE);
-  std::vector<float> small(8);
-  BOOST_CHECK_EQUAL(stipple_sampler_fill_pixel(s.get(), 0, 0, 0, small.data(), small.size()), STIPPLE_ERROR_OUT_OF_RANGE);
-  std::vector<float> exact(9);
-  BOOST_CHECK_EQUAL(stipple_sampler_fill_pixel(s.get(), 0, 0, 0, exact.data(), ~size_t(0)),
-                    STIPPLE_OK);  // a huge capacity is only a bound: exactly N*k*arity = 9 floats are written
-  // Zero values requested from the independent stream is a no-op or a clear error, never a crash.
-  const stipple_status zero = stipple_sampler_sample_independent(s.get(), 0, 0, 0, 0, out, 0);
-  BOOST_CHECK(zero == STIPPLE_OK || zero == STIPPLE_ERROR_OUT_OF_RANGE);
+    auto s = makeSampler(STIPPLE_PATTERN_STRATIFIED, 3, 0, {{3, 1, nullptr}});
+    float out[3];
+    BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 3, 0, out, 3), STIPPLE_ERROR_OUT_OF_RANGE);
+    BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, kMax32, 0, out, 3), STIPPLE_ERROR_OUT_OF_RANGE);
+    BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 2, 0, out, 2), STIPPLE_ERROR_OUT_OF_RANGE);
+    BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 2, kMax32, out, 3), STIPPLE_ERROR_OUT_OF_RANGE);
+    std::vector<float> small(8);
+    BOOST_CHECK_EQUAL(stipple_sampler_fill_pixel(s.get(), 0, 0, 0, small.data(), small.size()),
+                      STIPPLE_ERROR_OUT_OF_RANGE);
+    std::vector<float> exact(9);
+    BOOST_CHECK_EQUAL(stipple_sampler_fill_pixel(s.get(), 0, 0, 0, exact.data(), ~size_t(0)),
+                      STIPPLE_OK); // a huge capacity is only a bound: exactly N*k*arity = 9 floats are written
+    // Zero values requested from the independent stream is a no-op or a clear error, never a crash.
+    const stipple_status zero = stipple_sampler_sample_independent(s.get(), 0, 0, 0, 0, out, 0);
+    BOOST_CHECK(zero == STIPPLE_OK || zero == STIPPLE_ERROR_OUT_OF_RANGE);
 }

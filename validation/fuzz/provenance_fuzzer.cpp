@@ -19,7 +19,8 @@ void require(bool condition) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size > 16384) return 0;
     using namespace stipple::validation;
-    static const stipple::render::Image image{3, 2, {0.1f, 0.2f, 0.3f, 1, 2, 3, 0, 0, 0, 4, 5, 6, 7, 8, 9, 0.5f, 0.25f, 1}};
+    static const stipple::render::Image image{
+        3, 2, {0.1f, 0.2f, 0.3f, 1, 2, 3, 0, 0, 0, 4, 5, 6, 7, 8, 9, 0.5f, 0.25f, 1}};
     static const stipple::render::Image variance{3, 2, std::vector<float>(18, 0.01f)};
     static const std::string key = "0123456789abcdef", material = "scene|1.0|shim|3x2|spp 16|seed 7";
     const std::string text(reinterpret_cast<const char*>(data), size);

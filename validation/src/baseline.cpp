@@ -22,7 +22,8 @@ BaselineComparison compareToBaseline(const std::vector<CellAggregate>& now, cons
         double delta = c->rms.mean - b.rms.mean;
         if (delta > tolerance) {
             out.failed = true;
-            std::snprintf(buf, sizeof buf, "FAIL rms  %s %s @ %u spp: %.5g ± %.2g now vs %.5g ± %.2g baseline (+%.3g > tolerance %.3g)",
+            std::snprintf(buf, sizeof buf,
+                          "FAIL rms  %s %s @ %u spp: %.5g ± %.2g now vs %.5g ± %.2g baseline (+%.3g > tolerance %.3g)",
                           b.scene.c_str(), b.pattern.c_str(), b.spp, c->rms.mean, hNow, b.rms.mean, hBase, delta,
                           tolerance);
             out.lines.push_back(buf);
@@ -34,7 +35,8 @@ BaselineComparison compareToBaseline(const std::vector<CellAggregate>& now, cons
         double budget = timeFactor * b.medianRenderSeconds + 0.005;
         if (c->medianRenderSeconds > budget) {
             out.failed = true;
-            std::snprintf(buf, sizeof buf, "FAIL time %s %s @ %u spp: %.4fs now vs %.4fs baseline (budget %.4fs = %.2f× + 5 ms)",
+            std::snprintf(buf, sizeof buf,
+                          "FAIL time %s %s @ %u spp: %.4fs now vs %.4fs baseline (budget %.4fs = %.2f× + 5 ms)",
                           b.scene.c_str(), b.pattern.c_str(), b.spp, c->medianRenderSeconds, b.medianRenderSeconds,
                           budget, timeFactor);
             out.lines.push_back(buf);

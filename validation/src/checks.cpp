@@ -53,10 +53,11 @@ int compareRms(const CellAggregate& a, const CellAggregate& b, std::string& why)
     auto complete = [](const CellAggregate& c, const SampleSummary& s) { return c.seeds >= 2 && s.count == c.seeds; };
     const bool corrected = complete(a, a.logRms) && complete(b, b.logRms);
     if (corrected || (complete(a, a.logRmsMeasured) && complete(b, b.logRmsMeasured))) {
-        const Interval d = corrected ? welchDifference(a.logRms, b.logRms)
-                                     : welchDifference(a.logRmsMeasured, b.logRmsMeasured);
-        why = fmt(" (%sgeometric-mean ratio %.3g, 95%% %.3g-%.3g)", corrected ? "" : "measured RMS, a seed at the floor: ",
-                  std::exp(d.mean), std::exp(d.lo()), std::exp(d.hi()));
+        const Interval d =
+            corrected ? welchDifference(a.logRms, b.logRms) : welchDifference(a.logRmsMeasured, b.logRmsMeasured);
+        why = fmt(" (%sgeometric-mean ratio %.3g, 95%% %.3g-%.3g)",
+                  corrected ? "" : "measured RMS, a seed at the floor: ", std::exp(d.mean), std::exp(d.lo()),
+                  std::exp(d.hi()));
         return d.hi() < 0 ? -1 : d.lo() > 0 ? 1 : 0;
     }
     why = " (mean RMS intervals)";
@@ -184,7 +185,10 @@ const Fields<CheckOutcome>& outcomeFields() {
         text("status", [](const O& o) { return std::string(checkStatusName(o.status)); }),
         field("fails_run", &O::failsRun),
         field("claim", &O::claim),
-        {"figures", [](const O& o) { return Json(o.figures); }, {}, [](const O& o) {
+        {"figures",
+         [](const O& o) { return Json(o.figures); },
+         {},
+         [](const O& o) {
              std::string all;
              for (const auto& f : o.figures) all += (all.empty() ? "" : "; ") + f;
              return csvField(all);

@@ -15,8 +15,8 @@ const char* checkStatusName(CheckStatus status); // "PASS", "FAIL", "NOT SEPARAT
 struct CheckOutcome {
     Check check;
     CheckStatus status = CheckStatus::Pass;
-    bool failsRun = false;           // FAIL, or NOT SEPARATED when the check says not_separated: fail
-    std::string claim;               // one line: what was claimed
+    bool failsRun = false;            // FAIL, or NOT SEPARATED when the check says not_separated: fail
+    std::string claim;                // one line: what was claimed
     std::vector<std::string> figures; // one line per cell / scene measured, marked when it is the culprit
 };
 

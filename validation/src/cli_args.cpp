@@ -35,14 +35,18 @@ Args parseArgs(const std::vector<std::string>& argv) {
         } else if (s == "--version") {
             a.version = true;
             return a;
-        } else if (s == "-o" || s == "--output") a.out = value(i);
-        else if (s == "--cache") a.cache = value(i);
-        else if (s == "--baseline") a.baseline = value(i);
+        } else if (s == "-o" || s == "--output")
+            a.out = value(i);
+        else if (s == "--cache")
+            a.cache = value(i);
+        else if (s == "--baseline")
+            a.baseline = value(i);
         else if (s == "--threads") {
             std::string v = value(i);
             char* end = nullptr;
             long t = std::strtol(v.c_str(), &end, 10);
-            if (v.empty() || *end || t < 0 || t > 1024) throw UsageError("--threads: expected a count in [0, 1024], got '" + v + "'");
+            if (v.empty() || *end || t < 0 || t > 1024)
+                throw UsageError("--threads: expected a count in [0, 1024], got '" + v + "'");
             a.threads = int(t);
         } else if (s == "--shard") {
             std::string v = value(i);
@@ -52,13 +56,17 @@ Args parseArgs(const std::vector<std::string>& argv) {
                 throw UsageError("--shard: expected i/n with 1 ≤ i ≤ n, got '" + v + "'");
             a.shardIndex = n1;
             a.shardCount = n2;
-        } else if (s == "--references-only") a.referencesOnly = true;
+        } else if (s == "--references-only")
+            a.referencesOnly = true;
         else if (s == "--merge") {
             while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) a.merge.push_back(argv[++i]);
             if (a.merge.empty()) throw UsageError("--merge needs at least one report folder");
-        } else if (!s.empty() && s[0] == '-') throw UsageError("unknown option '" + s + "'");
-        else if (a.matrix.empty()) a.matrix = s;
-        else throw UsageError("unexpected argument '" + s + "' (the matrix is '" + a.matrix + "')");
+        } else if (!s.empty() && s[0] == '-')
+            throw UsageError("unknown option '" + s + "'");
+        else if (a.matrix.empty())
+            a.matrix = s;
+        else
+            throw UsageError("unexpected argument '" + s + "' (the matrix is '" + a.matrix + "')");
     }
     if (a.matrix.empty()) throw UsageError("no matrix file given");
     if (!a.merge.empty() && (a.shardCount > 1 || a.referencesOnly))

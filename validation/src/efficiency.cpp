@@ -42,7 +42,8 @@ double EfficiencyRanking::ratioOf(const std::string& a, const std::string& b, do
         if (p.pattern == b) pb = &p;
     }
     if (!pa || !pb) return NAN;
-    const Interval d = welchDifference({pa->logMean, pa->logVariance, pa->seeds}, {pb->logMean, pb->logVariance, pb->seeds});
+    const Interval d =
+        welchDifference({pa->logMean, pa->logVariance, pa->seeds}, {pb->logMean, pb->logVariance, pb->seeds});
     if (lo) *lo = std::exp(d.lo());
     if (hi) *hi = std::exp(d.hi());
     return std::exp(d.mean);

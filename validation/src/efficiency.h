@@ -24,7 +24,7 @@ inline constexpr double kHeavyTailFactor = 2.0;
 
 struct RobustRms {
     double trimmedMean = 0; // mean corrected RMS without the lowest and the highest seed (K ≥ 4; else the mean)
-    double maxOverMin = 0;   // worst seed's RMS / best seed's
+    double maxOverMin = 0;  // worst seed's RMS / best seed's
     bool heavyTailed = false;
 };
 RobustRms robustRms(const std::vector<double>& perSeedRms);
@@ -34,20 +34,20 @@ struct PatternEfficiency {
     double efficiency = 0, lo = 0, hi = 0; // geometric mean over seeds and its 95% interval, 1 / (MSE · s)
     double logMean = 0, logVariance = 0;
     size_t seeds = 0;
-    bool measuredMse = false;              // a seed at the noise floor: measured MSE used (conservative)
-    double floorShare = 0;                 // noise floor / mean corrected MSE
+    bool measuredMse = false; // a seed at the noise floor: measured MSE used (conservative)
+    double floorShare = 0;    // noise floor / mean corrected MSE
     RobustRms rms;
 };
 
-struct EfficiencyStep {          // ranked[i] against ranked[i + 1]
+struct EfficiencyStep {               // ranked[i] against ranked[i + 1]
     double ratio = 0, lo = 0, hi = 0; // efficiency ratio and its 95% Welch interval
-    bool separated = false;      // lo > 1
+    bool separated = false;           // lo > 1
 };
 
 struct EfficiencyRanking {
-    std::string scene, region;   // region empty: the whole image
+    std::string scene, region; // region empty: the whole image
     uint32_t spp = 0;
-    bool equalTime = true;       // 1 / (MSE · s); false: 1 / MSE
+    bool equalTime = true;                 // 1 / (MSE · s); false: 1 / MSE
     std::vector<PatternEfficiency> ranked; // most efficient first
     std::vector<EfficiencyStep> steps;
     double ratioOf(const std::string& a, const std::string& b, double* lo = nullptr, double* hi = nullptr) const;
@@ -57,9 +57,10 @@ struct EfficiencyRanking {
 // reference's noise floor for that error.
 using RowError = std::function<double(const ResultRow&)>; // measured MSE of a row (image or region)
 // equalTime false: ranked by 1 / MSE alone (error at equal samples).
-EfficiencyRanking rankEfficiency(const std::vector<ResultRow>& rows, const std::string& scene, uint32_t spp,
-                                 const std::vector<std::string>& patterns, double floor, bool equalTime = true,
-                                 const RowError& mse = [](const ResultRow& r) { return r.mse; });
+EfficiencyRanking rankEfficiency(
+    const std::vector<ResultRow>& rows, const std::string& scene, uint32_t spp,
+    const std::vector<std::string>& patterns, double floor, bool equalTime = true,
+    const RowError& mse = [](const ResultRow& r) { return r.mse; });
 
 // One-line form: "stratified 1.9× poisson (95% 1.6-2.3) > poisson ≈ independent (1.1×, 0.8-1.5)".
 std::string rankingText(const EfficiencyRanking& r);

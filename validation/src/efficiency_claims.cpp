@@ -20,16 +20,17 @@ void worsen(CheckStatus& s, CheckStatus t) {
 }
 
 // Judges the claimed order on one ranking; appends the figures.
-CheckStatus judge(const Check& k, const EfficiencyRanking& r, const std::string& where, std::vector<std::string>& figures) {
+CheckStatus judge(const Check& k, const EfficiencyRanking& r, const std::string& where,
+                  std::vector<std::string>& figures) {
     CheckStatus status = CheckStatus::Pass;
     std::string line = where + ": ";
     for (size_t i = 0; i + 1 < k.order.size(); ++i) {
         double lo = NAN, hi = NAN;
         const double ratio = r.ratioOf(k.order[i], k.order[i + 1], &lo, &hi);
         CheckStatus s = std::isnan(ratio) ? CheckStatus::Fail
-                        : lo > 1         ? CheckStatus::Pass
-                        : hi < 1         ? CheckStatus::Fail
-                                         : CheckStatus::NotSeparated;
+                        : lo > 1          ? CheckStatus::Pass
+                        : hi < 1          ? CheckStatus::Fail
+                                          : CheckStatus::NotSeparated;
         worsen(status, s);
         line += fmt("%s%s/%s %.2f× (95%% %.2f-%.2f) %s", i ? "; " : "", k.order[i].c_str(), k.order[i + 1].c_str(),
                     ratio, lo, hi, checkStatusName(s));
@@ -51,7 +52,9 @@ double floorFromRows(const std::vector<ResultRow>& rows, const std::string& scen
         if (r.scene != scene) continue;
         const size_t i = size_t(region);
         const double mse = region < 0 ? r.mse : i < r.regionMse.size() ? r.regionMse[i] : NAN;
-        const double corrected = region < 0 ? r.mseCorrected : i < r.regionMseCorrected.size() ? r.regionMseCorrected[i] : NAN;
+        const double corrected = region < 0                        ? r.mseCorrected
+                                 : i < r.regionMseCorrected.size() ? r.regionMseCorrected[i]
+                                                                   : NAN;
         if (std::isfinite(mse) && std::isfinite(corrected)) floor = std::max(floor, mse - corrected);
     }
     return floor;
@@ -81,11 +84,14 @@ void evaluateEqualTime(const Check& k, const Matrix& m, const std::vector<Result
         for (size_t ri = 0; ri < s.regions.size(); ++ri) {
             if (!k.region.empty() && k.region != s.regions[ri].name) continue;
             const EfficiencyRanking rr =
-                k.flipMetric
-                    ? rankEfficiency(rows, s.name, k.spp, m.patterns, 0, equalTime,
-                                     [ri](const ResultRow& row) { return ri < row.regionFlip.size() ? row.regionFlip[ri] : NAN; })
-                    : rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name, int(ri)), equalTime,
-                                     [ri](const ResultRow& row) { return ri < row.regionMse.size() ? row.regionMse[ri] : NAN; });
+                k.flipMetric ? rankEfficiency(rows, s.name, k.spp, m.patterns, 0, equalTime,
+                                              [ri](const ResultRow& row) {
+                                                  return ri < row.regionFlip.size() ? row.regionFlip[ri] : NAN;
+                                              })
+                             : rankEfficiency(rows, s.name, k.spp, m.patterns, floorFromRows(rows, s.name, int(ri)),
+                                              equalTime, [ri](const ResultRow& row) {
+                                                  return ri < row.regionMse.size() ? row.regionMse[ri] : NAN;
+                                              });
             worsen(o.status, judge(k, rr, fmt("%s region %s", s.name.c_str(), s.regions[ri].name.c_str()), o.figures));
         }
     }

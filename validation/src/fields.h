@@ -24,7 +24,7 @@ struct Field {
     std::function<Json(const Record&)> toJson;
     std::function<void(Record&, const Json&)> fromJson; // empty: written only
     std::function<std::string(const Record&)> toCsv;
-    bool required = false;                              // reading fails when it is absent
+    bool required = false; // reading fails when it is absent
 };
 
 template <class Record>
@@ -37,8 +37,10 @@ namespace detail {
 
 template <class T>
 Json valueToJson(const T& v) {
-    if constexpr (std::is_floating_point_v<T>) return std::isfinite(v) ? Json(v) : Json(nullptr);
-    else return Json(v);
+    if constexpr (std::is_floating_point_v<T>)
+        return std::isfinite(v) ? Json(v) : Json(nullptr);
+    else
+        return Json(v);
 }
 
 template <class T>
@@ -46,18 +48,22 @@ T valueFromJson(const Json& j) {
     // Non-finite numbers are written as null and read back as NaN.
     if constexpr (std::is_floating_point_v<T>)
         return j.is_null() ? std::numeric_limits<T>::quiet_NaN() : j.get<T>();
-    else return j.get<T>();
+    else
+        return j.get<T>();
 }
 
 template <class T>
 std::string valueToCsv(const T& v, const char* format) {
-    if constexpr (std::is_same_v<T, std::string>) return csvField(v);
-    else if constexpr (std::is_same_v<T, bool>) return v ? "1" : "0";
+    if constexpr (std::is_same_v<T, std::string>)
+        return csvField(v);
+    else if constexpr (std::is_same_v<T, bool>)
+        return v ? "1" : "0";
     else if constexpr (std::is_floating_point_v<T>) {
         char buf[64];
         std::snprintf(buf, sizeof buf, format, double(v));
         return buf;
-    } else return std::to_string(v);
+    } else
+        return std::to_string(v);
 }
 
 } // namespace detail
@@ -81,7 +87,8 @@ Field<Record> field(std::string name, Get get, const char* format = "%.9g", bool
 // The same for a data member.
 template <class Record, class T>
 Field<Record> field(std::string name, T Record::*member, const char* format = "%.9g", bool required = false) {
-    return field<Record>(std::move(name), [member](Record& r) -> T& { return r.*member; }, format, required);
+    return field<Record>(
+        std::move(name), [member](Record& r) -> T& { return r.*member; }, format, required);
 }
 
 // A list of numbers (e.g. one per region): a JSON array (non-finite entries as null, read back as NaN); in the CSV

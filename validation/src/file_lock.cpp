@@ -14,8 +14,7 @@ FileLock::FileLock(const std::string& path) {
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
     if (fd_ < 0) throw std::runtime_error("cannot open lock file " + path + ": " + std::strerror(errno));
     int rc;
-    while ((rc = ::flock(fd_, LOCK_EX)) != 0 && errno == EINTR) {
-    }
+    while ((rc = ::flock(fd_, LOCK_EX)) != 0 && errno == EINTR) {}
     if (rc != 0) {
         const int err = errno;
         ::close(fd_);

@@ -35,7 +35,8 @@ Plane filter(const Plane& in, const Kernel& k, bool transpose = false) {
             for (int dy = -r; dy <= r; ++dy) {
                 const int yy = std::clamp(y + dy, 0, in.h - 1);
                 for (int dx = -r; dx <= r; ++dx) {
-                    const double w = transpose ? k.k[size_t(dx + r) * n + (dy + r)] : k.k[size_t(dy + r) * n + (dx + r)];
+                    const double w =
+                        transpose ? k.k[size_t(dx + r) * n + (dy + r)] : k.k[size_t(dy + r) * n + (dx + r)];
                     sum += w * in.at(std::clamp(x + dx, 0, in.w - 1), yy);
                 }
             }
@@ -126,7 +127,8 @@ struct Opponent {
 };
 Opponent toOpponent(const Image& srgb) {
     Opponent o;
-    for (Plane* p : {&o.y, &o.cx, &o.cz}) *p = {srgb.width, srgb.height, std::vector<double>(size_t(srgb.width) * srgb.height)};
+    for (Plane* p : {&o.y, &o.cx, &o.cz})
+        *p = {srgb.width, srgb.height, std::vector<double>(size_t(srgb.width) * srgb.height)};
     for (size_t i = 0; i < o.y.v.size(); ++i) {
         Vec3 c;
         for (int ch = 0; ch < 3; ++ch) c[ch] = srgbToLinear(std::clamp(double(srgb.rgb[3 * i + ch]), 0.0, 1.0));

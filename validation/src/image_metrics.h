@@ -11,9 +11,9 @@ namespace stipple::validation {
 using render::Image;
 
 struct ImageError {
-    double mse = 0;            // (1/P) Σ_pixels Σ_rgb (I_ref − I)², P = finite pixel count
-    double rms = 0;            // sqrt(mse): the study's equation 1
-    uint64_t pixels = 0;       // pixels compared (finite in both images)
+    double mse = 0;               // (1/P) Σ_pixels Σ_rgb (I_ref − I)², P = finite pixel count
+    double rms = 0;               // sqrt(mse): the study's equation 1
+    uint64_t pixels = 0;          // pixels compared (finite in both images)
     uint64_t nonFinitePixels = 0; // pixels with a non-finite channel in either image: counted, excluded
 };
 

@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
     auto start = std::chrono::steady_clock::now();
     try {
         Results results;
-        if (!args.merge.empty()) results = mergeShards(matrix, args.merge, reportDir);
+        if (!args.merge.empty())
+            results = mergeShards(matrix, args.merge, reportDir);
         else {
             RunOptions o;
             o.unloadable = unloadable;
@@ -144,8 +145,9 @@ int main(int argc, char** argv) {
                         s.fit.slopeHalfWidth);
         if (!shard) std::cout << "\n" << verdictsText(in);
         bool failed = false;
-        if (shard) std::cout << "\nshard " << args.shardIndex << "/" << args.shardCount
-                             << ": checks are evaluated when the shards are merged (--merge)\n";
+        if (shard)
+            std::cout << "\nshard " << args.shardIndex << "/" << args.shardCount
+                      << ": checks are evaluated when the shards are merged (--merge)\n";
         else if (!in.outcomes.empty()) {
             std::cout << "\nchecks:\n";
             for (const auto& o : in.outcomes) {

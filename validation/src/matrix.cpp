@@ -63,7 +63,8 @@ struct Parser {
             throw MatrixError(e.what());
         }
     }
-    template <typename T> T get(const YAML::Node& node, const std::string& what) const {
+    template <typename T>
+    T get(const YAML::Node& node, const std::string& what) const {
         if (!node.IsScalar()) fail(node, what + " must be a scalar");
         if constexpr (std::is_same_v<T, std::string>) {
             return node.Scalar();
@@ -137,11 +138,13 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
                 ms.integrator = P.get<std::string>(s["integrator"], "integrator");
                 const auto& known = P.vocabulary.integrators;
                 if (std::find(known.begin(), known.end(), ms.integrator) == known.end())
-                    P.fail(s["integrator"], "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
+                    P.fail(s["integrator"],
+                           "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
             }
             if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
             if (const YAML::Node regions = s["regions"]) {
-                if (!regions.IsSequence()) P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
+                if (!regions.IsSequence())
+                    P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
                 for (const auto& rn : regions) {
                     P.expectMap(rn, "a region");
                     P.onlyKeys(rn, {"name", "rect"}, "a region");
@@ -175,7 +178,6 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
             P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
         m.scenes.push_back(ms);
     }
-
 }
 
 void parsePatterns(const Parser& P, const YAML::Node& croot, Matrix& m) {
@@ -187,18 +189,18 @@ void parsePatterns(const Parser& P, const YAML::Node& croot, Matrix& m) {
             P.fail(p, "pattern '" + name + "' listed twice");
         m.patterns.push_back(name);
     }
-
 }
 
 void parseSpp(const Parser& P, const YAML::Node& croot, Matrix& m) {
     const YAML::Node spp = P.required(croot, "spp", "the matrix");
-    if (spp.IsScalar()) m.spp.push_back(P.spp(spp, "spp"));
+    if (spp.IsScalar())
+        m.spp.push_back(P.spp(spp, "spp"));
     else if (spp.IsSequence() && spp.size() > 0)
         for (const auto& n : spp) m.spp.push_back(P.spp(n, "spp"));
-    else P.fail(spp, "spp must be a number or a non-empty list");
+    else
+        P.fail(spp, "spp must be a number or a non-empty list");
     std::sort(m.spp.begin(), m.spp.end());
     if (std::adjacent_find(m.spp.begin(), m.spp.end()) != m.spp.end()) P.fail(spp, "spp lists a value twice");
-
 }
 
 // K (seeds 1..K) or an explicit list.
@@ -206,8 +208,8 @@ void parseSeeds(const Parser& P, const YAML::Node& croot, Matrix& m) {
     const YAML::Node seeds = P.required(croot, "seeds", "the matrix");
     if (seeds.IsScalar()) {
         long long k = P.get<long long>(seeds, "seeds");
-        if (k < 4 || k > 1000) P.fail(seeds, "seeds must be a count in [4, 1000] (K ≥ 4 for an interval), got " +
-                                                 seeds.Scalar());
+        if (k < 4 || k > 1000)
+            P.fail(seeds, "seeds must be a count in [4, 1000] (K ≥ 4 for an interval), got " + seeds.Scalar());
         for (long long i = 1; i <= k; ++i) m.seeds.push_back(uint64_t(i));
     } else if (seeds.IsSequence()) {
         std::set<uint64_t> seen;
@@ -217,8 +219,8 @@ void parseSeeds(const Parser& P, const YAML::Node& croot, Matrix& m) {
             m.seeds.push_back(v);
         }
         if (m.seeds.size() < 4) P.fail(seeds, "seeds must list at least 4 values (K ≥ 4 for an interval)");
-    } else P.fail(seeds, "seeds must be a count or a list of seeds");
-
+    } else
+        P.fail(seeds, "seeds must be a count or a list of seeds");
 }
 
 // The reference's settings, and its spp against the cells' (per scene too).
@@ -238,9 +240,9 @@ void parseReference(const Parser& P, const YAML::Node& croot, Matrix& m) {
             P.fail(scenes[i], "reference_spp (" + std::to_string(m.scenes[i].referenceSpp) +
                                   ") must be ≥ 4× the largest cell spp (" + std::to_string(m.spp.back()) + ")");
     if (m.reference.spp < 4 * m.spp.back())
-        P.fail(croot["reference"] ? croot["reference"] : croot,
-               "reference spp (" + std::to_string(m.reference.spp) + ") must be ≥ 4× the largest cell spp (" +
-                   std::to_string(m.spp.back()) + ")");
+        P.fail(croot["reference"] ? croot["reference"] : croot, "reference spp (" + std::to_string(m.reference.spp) +
+                                                                    ") must be ≥ 4× the largest cell spp (" +
+                                                                    std::to_string(m.spp.back()) + ")");
     // The largest render a scene entry asks for (its reference) must fit the renderer's budget: found now, not
     // after the other scenes have rendered.
     for (size_t i = 0; i < m.scenes.size(); ++i) {
@@ -252,7 +254,6 @@ void parseReference(const Parser& P, const YAML::Node& croot, Matrix& m) {
             P.fail(scenes[i], std::string("the reference of this scene: ") + e.what());
         }
     }
-
 }
 
 void parseCrop(const Parser& P, const YAML::Node& croot, Matrix& m) {
@@ -274,7 +275,6 @@ void parseCrop(const Parser& P, const YAML::Node& croot, Matrix& m) {
                 P.fail(c["spp"], "crop spp must be one of the matrix's spp");
         }
     }
-
 }
 
 void parseBaseline(const Parser& P, const YAML::Node& croot, Matrix& m) {
@@ -283,7 +283,6 @@ void parseBaseline(const Parser& P, const YAML::Node& croot, Matrix& m) {
         P.onlyKeys(b, {"time_factor"}, "baseline");
         if (b["time_factor"]) m.baselineTimeFactor = P.positive(b["time_factor"], "time_factor");
     }
-
 }
 
 void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
@@ -297,7 +296,8 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
             for (const auto& ms : m.scenes)
                 if (names.size() < 20) names.push_back(ms.name);
             if (m.scenes.size() > names.size()) names.push_back("...");
-            P.fail(n, "unknown scene '" + s + "' (matrix scenes: " + joined(names) + (allowAll ? ", or all" : "") + ")");
+            P.fail(n,
+                   "unknown scene '" + s + "' (matrix scenes: " + joined(names) + (allowAll ? ", or all" : "") + ")");
         }
         return s;
     };
@@ -381,8 +381,9 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
                         known |= r.name == k.region;
                     }
                     if (!ms) P.fail(c["region"], "a region needs one scene, not 'all'");
-                    if (!known) P.fail(c["region"], "unknown region '" + k.region + "' of scene " + k.scene +
-                                                        " (its regions: " + joined(names) + ")");
+                    if (!known)
+                        P.fail(c["region"], "unknown region '" + k.region + "' of scene " + k.scene +
+                                                " (its regions: " + joined(names) + ")");
                 }
                 const YAML::Node order = P.required(c, "order", what);
                 if (!order.IsSequence() || order.size() < 2)
@@ -412,9 +413,10 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     }
     if (!root || !root.IsMap()) throw MatrixError(path + ":1:1: a matrix must be a YAML map");
     const YAML::Node& croot = root;
-    P.onlyKeys(croot, {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop",
-                       "baseline", "checks"},
-               "the matrix");
+    P.onlyKeys(
+        croot,
+        {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop", "baseline", "checks"},
+        "the matrix");
 
     Matrix m;
     m.path = path;

@@ -23,12 +23,12 @@ struct Region {
 };
 
 struct MatrixScene {
-    std::string name;        // used by checks and in the report; default: the file's stem
-    std::string file;        // as written in the matrix
-    std::string path;        // resolved against the matrix file's folder
+    std::string name;          // used by checks and in the report; default: the file's stem
+    std::string file;          // as written in the matrix
+    std::string path;          // resolved against the matrix file's folder
     int width = 0, height = 0; // 0: the scene's default
-    std::string integrator;  // empty: the scene's
-    int maxDepth = -1;       // -1: the scene's
+    std::string integrator;    // empty: the scene's
+    int maxDepth = -1;         // -1: the scene's
     uint32_t referenceSpp = 0; // 0: the matrix's reference spp (a noisy scene may need more)
     std::vector<Region> regions;
 };
@@ -50,7 +50,7 @@ enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime, Equal
 
 struct Check {
     CheckType type = CheckType::Ordering;
-    std::string where;       // file:line:column of the check in the matrix
+    std::string where; // file:line:column of the check in the matrix
     std::string scene = "all";
     // ordering
     uint32_t sppMin = 0;
@@ -62,7 +62,7 @@ struct Check {
     // time_ratio
     std::string numerator, denominator;
     double maxRatio = 0;
-    uint32_t spp = 0;        // 0: the largest spp of the matrix
+    uint32_t spp = 0; // 0: the largest spp of the matrix
     // time_ceiling
     double seconds = 0;
     // equal_time / equal_spp (order: best first; spp as time_ratio)
@@ -72,15 +72,15 @@ struct Check {
 };
 
 struct Matrix {
-    std::string path;        // the matrix file as given
-    std::string text;        // its full text, shown in the report
+    std::string path; // the matrix file as given
+    std::string text; // its full text, shown in the report
     std::string name;
     std::vector<MatrixScene> scenes;
     std::vector<std::string> patterns;
     std::vector<uint32_t> spp;   // ascending
     std::vector<uint64_t> seeds; // K ≥ 4
     ReferenceSettings reference;
-    std::string cacheDir;        // resolved; empty: <report>/../.stipple-cache
+    std::string cacheDir; // resolved; empty: <report>/../.stipple-cache
     int threads = 0;
     CropSettings crop;
     double baselineTimeFactor = 1.5; // --baseline: a cell's median seconds may grow by this factor

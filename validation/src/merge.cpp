@@ -28,11 +28,12 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
     for (const auto& dir : dirs) {
         Results r = readResultsJson((fs::path(dir) / "results.json").string());
         if (merged.fingerprint.empty()) merged.fingerprint = r.fingerprint;
-        if (merged.rendererVersion.empty()) merged.rendererVersion = r.rendererVersion;
+        if (merged.rendererVersion.empty())
+            merged.rendererVersion = r.rendererVersion;
         else if (r.rendererVersion != merged.rendererVersion)
             throw std::runtime_error(dir + ": renderer version '" + r.rendererVersion + "' differs from '" +
                                      merged.rendererVersion + "' of the other shards");
-        for (const auto& k : r.skipped) merged.skipped.push_back({k.name, dir + ": " + k.error});  // stays reported
+        for (const auto& k : r.skipped) merged.skipped.push_back({k.name, dir + ": " + k.error}); // stays reported
         for (const auto& s : r.scenes) {
             bool known = false;
             for (const auto& k : merged.scenes) known |= k.name == s.name;
@@ -41,7 +42,8 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
         for (const auto& row : r.rows) {
             if (!isMatrixCell(m, row))
                 throw std::runtime_error(dir + ": " + row.scene + " " + row.pattern + " " + std::to_string(row.spp) +
-                                         " spp seed " + std::to_string(row.seed) + " is not a cell × seed of " + m.path);
+                                         " spp seed " + std::to_string(row.seed) + " is not a cell × seed of " +
+                                         m.path);
             if (!seen.insert({row.scene, row.pattern, row.spp, row.seed}).second)
                 throw std::runtime_error(dir + ": " + row.scene + " " + row.pattern + " " + std::to_string(row.spp) +
                                          " spp seed " + std::to_string(row.seed) + " appears in two shards");
@@ -59,8 +61,9 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
     size_t missing = 0;
     std::string example;
     for (const auto& s : m.scenes) {
-        if (std::any_of(merged.skipped.begin(), merged.skipped.end(), [&](const SkippedScene& k) { return k.name == s.name; }))
-            continue;  // its rows are missing because it failed, which the merged run reports as an error
+        if (std::any_of(merged.skipped.begin(), merged.skipped.end(),
+                        [&](const SkippedScene& k) { return k.name == s.name; }))
+            continue; // its rows are missing because it failed, which the merged run reports as an error
         for (const auto& p : m.patterns)
             for (uint32_t spp : m.spp)
                 for (uint64_t seed : m.seeds)

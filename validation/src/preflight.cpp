@@ -22,7 +22,8 @@ std::map<std::string, std::string> preflight(const PreflightInputs& in) {
             throw PreflightError(std::string("--baseline: ") + e.what());
         }
         if (base.rows.empty())
-            throw PreflightError("--baseline " + in.baselinePath + ": no result rows (not a results.json of stipple-validate)");
+            throw PreflightError("--baseline " + in.baselinePath +
+                                 ": no result rows (not a results.json of stipple-validate)");
     }
 
     std::error_code ec;

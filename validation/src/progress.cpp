@@ -7,7 +7,8 @@
 
 namespace stipple::validation {
 
-Progress::Progress(size_t total) : total_(total), tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+Progress::Progress(size_t total)
+    : total_(total), tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
 
 std::string Progress::eta() const {
     if (done_ == 0) return "?";

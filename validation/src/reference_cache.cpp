@@ -31,7 +31,8 @@ namespace {
 // What the cache's .json beside each reference records: how it was made, and (key material, checksums) what
 // reference_integrity.h verifies before the entry is used.
 struct ProvenanceRecord {
-    std::string key, keyMaterial, imageChecksum, varianceChecksum, scene, sceneFile, contentHash, rendererVersion, renderer;
+    std::string key, keyMaterial, imageChecksum, varianceChecksum, scene, sceneFile, contentHash, rendererVersion,
+        renderer;
     int width = 0, height = 0;
     std::string pattern;
     uint32_t spp = 0;
@@ -96,7 +97,8 @@ void publishReferenceEntry(const std::vector<std::pair<std::string, const render
         const std::string& target = i < images.size() ? images[i].first : provenancePath;
         std::error_code ec;
         fs::rename(temps[i]->path(), target, ec);
-        if (ec) throw std::runtime_error("cannot rename '" + temps[i]->path() + "' to '" + target + "': " + ec.message());
+        if (ec)
+            throw std::runtime_error("cannot rename '" + temps[i]->path() + "' to '" + target + "': " + ec.message());
         temps[i]->release();
     }
 }
@@ -107,16 +109,13 @@ std::string referenceKey(const render::Scene& scene, const render::RenderOptions
     return keyOf(referenceKeyMaterial(scene, o));
 }
 
-std::string keyOf(const std::string& material) {
-    return render::ContentHash().add(material).hex();
-}
+std::string keyOf(const std::string& material) { return render::ContentHash().add(material).hex(); }
 
 std::string referenceKeyMaterial(const render::Scene& scene, const render::RenderOptions& o) {
-    return scene.contentHash() + "|" + render::rendererIdentity() + "|" + render::shimIdentity(o.shim) +
-                           "|" + std::to_string(o.width) +
-                           "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
-                           std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " +
-                           std::to_string(o.maxDepth) + "|halves";
+    return scene.contentHash() + "|" + render::rendererIdentity() + "|" + render::shimIdentity(o.shim) + "|" +
+           std::to_string(o.width) + "x" + std::to_string(o.height) + "|spp " + std::to_string(o.spp) + "|seed " +
+           std::to_string(o.seed) + "|" + o.pattern + "|" + o.integrator + "|depth " + std::to_string(o.maxDepth) +
+           "|halves";
 }
 
 Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
@@ -179,12 +178,15 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
     std::time_t now = std::time(nullptr);
     char when[32];
     std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    const render::ImageMetadata meta = {
-        {"scene", scene.name()},           {"content_hash", scene.contentHash()},
-        {"renderer", render::rendererIdentity()},
-        {"pattern", options.pattern},      {"spp", std::to_string(options.spp)},
-        {"seed", std::to_string(options.seed)}, {"integrator", options.integrator},
-        {"max_depth", std::to_string(options.maxDepth)}, {"reference_key", ref.key}};
+    const render::ImageMetadata meta = {{"scene", scene.name()},
+                                        {"content_hash", scene.contentHash()},
+                                        {"renderer", render::rendererIdentity()},
+                                        {"pattern", options.pattern},
+                                        {"spp", std::to_string(options.spp)},
+                                        {"seed", std::to_string(options.seed)},
+                                        {"integrator", options.integrator},
+                                        {"max_depth", std::to_string(options.maxDepth)},
+                                        {"reference_key", ref.key}};
     ProvenanceRecord p;
     p.key = ref.key;
     p.keyMaterial = keyMaterial;

@@ -23,7 +23,8 @@ Provenance parseProvenance(const std::string& jsonText) {
     if (j.is_discarded() || !j.is_object()) throw std::runtime_error("provenance is not a JSON object");
     auto text = [&](const char* k) {
         auto it = j.find(k);
-        if (it == j.end() || !it->is_string()) throw std::runtime_error(std::string("provenance lacks the string '") + k + "'");
+        if (it == j.end() || !it->is_string())
+            throw std::runtime_error(std::string("provenance lacks the string '") + k + "'");
         return it->get<std::string>();
     };
     auto count = [&](const char* k) {

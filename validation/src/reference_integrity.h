@@ -12,8 +12,8 @@ namespace stipple::validation {
 
 // The fields of a provenance JSON the cache relies on.
 struct Provenance {
-    std::string key;          // 16 hex digits, the entry's file name
-    std::string keyMaterial;  // everything the key hashes, in full (a hash collision cannot pass)
+    std::string key;         // 16 hex digits, the entry's file name
+    std::string keyMaterial; // everything the key hashes, in full (a hash collision cannot pass)
     int width = 0, height = 0;
     std::string imageChecksum, varianceChecksum; // pixelChecksumHex of each EXR's pixels
 };

@@ -27,7 +27,9 @@ ImageError regionError(const Image& reference, const Image& image, const Region&
     return compareImages(regionImage(reference, region), regionImage(image, region));
 }
 
-double regionNoiseFloor(const Image& variance, const Region& region) { return noiseFloor(regionImage(variance, region)); }
+double regionNoiseFloor(const Image& variance, const Region& region) {
+    return noiseFloor(regionImage(variance, region));
+}
 
 std::string regionCropFile(const std::string& scene, const std::string& region, const std::string& column) {
     return "crops/" + safeName(scene) + "-region-" + safeName(region) + "-" + safeName(column) + ".png";

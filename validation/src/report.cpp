@@ -66,9 +66,7 @@ int runGnuplot(const std::string& plotsDir) {
 }
 
 // A number in a gnuplot data file: full precision; gnuplot skips the non-finite "null".
-std::string plotNumber(double v) {
-    return std::isfinite(v) ? fmt("%.17g", v) : std::string("null");
-}
+std::string plotNumber(double v) { return std::isfinite(v) ? fmt("%.17g", v) : std::string("null"); }
 
 bool writePlots(const std::string& dir, const ReportInputs& in) {
     const Matrix& m = *in.matrix;
@@ -77,8 +75,11 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
     for (const auto& scene : m.scenes) {
         const std::string base = safeName(scene.name);
         std::ostringstream dat;
-        dat << "# spp mean_rms lo hi median_render_seconds (one block per pattern: "
-            << [&] { std::string s; for (auto& p : m.patterns) s += p + " "; return s; }() << ")\n";
+        dat << "# spp mean_rms lo hi median_render_seconds (one block per pattern: " << [&] {
+            std::string s;
+            for (auto& p : m.patterns) s += p + " ";
+            return s;
+        }() << ")\n";
         for (const auto& pattern : m.patterns) {
             dat << "# " << pattern << "\n";
             for (const auto& c : in.cells) {
@@ -99,8 +100,7 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
                 if (i) cmd += ", \\\n     ";
                 cmd += gq(base + ".dat") + fmt(" index %zu ", i) +
                        (bySeconds ? "using 5:2 with linespoints" : "using 1:2:3:4 with yerrorlines") + " lw 2 lc rgb " +
-                       gq(patternColor(m.patterns[i])) + " title " +
-                       gq(m.patterns[i]);
+                       gq(patternColor(m.patterns[i])) + " title " + gq(m.patterns[i]);
             }
             return cmd + "\n";
         };
@@ -110,8 +110,8 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
             std::string common = "set logscale xy\nset grid\nset key top right noenhanced\nset format y '10^{%L}'\n"
                                  "set ylabel 'RMS (eq. 1, reference floor removed)'\n";
             common += bySeconds ? "set xlabel 'median render seconds'\n" : "set xlabel 'samples per pixel'\n";
-            common += "set title " + gq(scene.name + (bySeconds ? ": RMS vs render time" : ": RMS vs spp")) +
-                      " noenhanced\n";
+            common +=
+                "set title " + gq(scene.name + (bySeconds ? ": RMS vs render time" : ": RMS vs spp")) + " noenhanced\n";
             script += "reset\n" + common;
             script += "set terminal pngcairo size 600,440 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
                       plotCommand(bySeconds);
@@ -139,7 +139,8 @@ std::string cellTable(const Matrix& m, const std::vector<CellAggregate>& cells, 
         for (const auto& c : cells) {
             if (c.scene != scene.name || (onlySpp && c.spp != onlySpp)) continue;
             o << "<tr><td>" << html(c.scene) << "</td><td>" << html(c.pattern) << "</td><td>" << c.spp << "</td>"
-              << fmt("<td>%.5g</td><td>%.2g</td><td>%.5g</td><td>%d/%zu</td><td>%.4f</td><td>%.4f</td><td>%.4g</td><td>%llu</td>",
+              << fmt("<td>%.5g</td><td>%.2g</td><td>%.5g</td><td>%d/%zu</td><td>%.4f</td><td>%.4f</td><td>%.4g</"
+                     "td><td>%llu</td>",
                      c.rms.mean, c.rms.halfWidth, c.meanRmsMeasured, c.floorLimitedSeeds, c.seeds,
                      c.medianRenderSeconds, c.medianSamplerSeconds, c.efficiency, (unsigned long long)c.nonFinitePixels)
               << "</tr>\n";
@@ -183,32 +184,38 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
 
     std::ostringstream o;
     o << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" "
-         "content=\"width=device-width, initial-scale=1\"><title>stipple-validate: " << html(m.name)
-      << "</title>\n<style>body{font-family:sans-serif;margin:1.5em auto;max-width:1240px;padding:0 1em;line-height:1.35}"
+         "content=\"width=device-width, initial-scale=1\"><title>stipple-validate: "
+      << html(m.name)
+      << "</title>\n<style>body{font-family:sans-serif;margin:1.5em auto;max-width:1240px;padding:0 "
+         "1em;line-height:1.35}"
          "table{border-collapse:collapse;margin:0.6em 0;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;"
          "text-align:right;vertical-align:top}th{background:#eee}td:first-child{text-align:left}"
          ".PASS{color:#080}.FAIL{color:#c00;font-weight:bold}.NOT{color:#a60}"
-         "pre{background:#f6f6f6;padding:0.6em;white-space:pre-wrap;overflow-wrap:anywhere;font-size:85%;margin:0.3em 0}"
+         "pre{background:#f6f6f6;padding:0.6em;white-space:pre-wrap;overflow-wrap:anywhere;font-size:85%;margin:0.3em "
+         "0}"
          "img{max-width:100%;height:auto}img.crop{image-rendering:pixelated}"
          ".headline{background:#f4f7fb;border-left:4px solid #456;padding:0.2em 1em}.counts{font-size:130%}"
          ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0}figcaption{text-align:center;font-size:90%}"
-         ".pair{display:flex;flex-wrap:wrap;gap:1%}.pair img{width:49%}.sw{display:inline-block;width:0.8em;height:0.8em;"
+         ".pair{display:flex;flex-wrap:wrap;gap:1%}.pair "
+         "img{width:49%}.sw{display:inline-block;width:0.8em;height:0.8em;"
          "margin-right:0.3em;border-radius:2px}.claim{margin:0.5em 0}.claim .st{font-weight:bold;margin-right:0.5em}"
          ".note{font-size:90%;color:#333}section.scene{border-top:2px solid #456;margin-top:1.5em}"
-         "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:320px}"
+         "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:"
+         "320px}"
          "section.scene>.top>div{flex:1 1 420px;min-width:0}"
          "@media print{section.scene{break-before:page}details{display:block}}</style></head><body>\n";
     o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n";
     o << verdictHeadlineHtml(in);
     o << "<p class=\"note\">Renderer " << html(r.rendererVersion) << "; " << r.rows.size() << " rows (cell × seed); "
-      << m.seeds.size() << " seeds per cell" << (in.wallSeconds > 0 ? fmt("; run took %.1f s", in.wallSeconds) : std::string())
-      << ". " << html(in.note) << " RMS is the study's equation 1, sqrt((1/(H·W)) Σ<sub>pixels</sub> Σ<sub>rgb</sub> "
+      << m.seeds.size() << " seeds per cell"
+      << (in.wallSeconds > 0 ? fmt("; run took %.1f s", in.wallSeconds) : std::string()) << ". " << html(in.note)
+      << " RMS is the study's equation 1, sqrt((1/(H·W)) Σ<sub>pixels</sub> Σ<sub>rgb</sub> "
          "(I<sub>ref</sub> − I)²), over finite pixels, with the reference's noise floor removed from the MSE "
          "(<em>floor-limited</em>: corrected MSE ≤ 2 × floor). Intervals are 95%. Times exclude scene load and BVH "
          "build.</p>\n";
     if (in.baseline) {
-        o << "<h2>Baseline " << html(in.baselinePath) << ": " << (in.baseline->failed ? "FAIL" : "PASS") << "</h2>\n<pre>"
-          << in.baseline->compared << " cells compared\n";
+        o << "<h2>Baseline " << html(in.baselinePath) << ": " << (in.baseline->failed ? "FAIL" : "PASS")
+          << "</h2>\n<pre>" << in.baseline->compared << " cells compared\n";
         for (const auto& l : in.baseline->lines) o << html(l) << "\n";
         o << "</pre>\n";
     }
@@ -222,7 +229,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
         bool keep = false;
         for (const auto& f : c.figures) {
             // A figure line starts with its scene's name; indented lines continue the one before.
-            if (f.rfind("    ", 0) != 0) keep = onlyScene.empty() || f.rfind(onlyScene + " ", 0) == 0 || f.rfind(onlyScene + ":", 0) == 0;
+            if (f.rfind("    ", 0) != 0)
+                keep = onlyScene.empty() || f.rfind(onlyScene + " ", 0) == 0 || f.rfind(onlyScene + ":", 0) == 0;
             if (keep) b << html(f) << "\n";
         }
         b << "</pre></div>\n";
@@ -233,7 +241,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
     const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
     for (const auto& scene : m.scenes) {
         const std::string b = safeName(scene.name);
-        o << "<section class=\"scene\" id=\"scene-" << b << "\"><h2>" << html(scene.name) << "</h2>\n<div class=\"top\">";
+        o << "<section class=\"scene\" id=\"scene-" << b << "\"><h2>" << html(scene.name)
+          << "</h2>\n<div class=\"top\">";
         const std::string picture = "crops/" + b + "-reference-full.png";
         if (fs::exists(fs::path(dir) / picture))
             o << "<img src=\"" << picture << "\" alt=\"" << html(scene.name) << ": the reference, tone-mapped\">";
@@ -249,7 +258,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
           << ": RMS against samples per pixel, one line per pattern, 95% intervals\"><img src=\"plots/" << b
           << "-rms-seconds.png\" alt=\"" << html(scene.name) << ": RMS against median render seconds\"></div>\n";
         o << sceneVerdictsHtml(in, scene);
-        o << "<details><summary>Centre crop and all cells of " << html(scene.name) << "</summary>\n<div class=\"grid\">";
+        o << "<details><summary>Centre crop and all cells of " << html(scene.name)
+          << "</summary>\n<div class=\"grid\">";
         std::vector<std::string> columns = m.patterns;
         columns.push_back("reference");
         for (const auto& p : columns) {
@@ -268,7 +278,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
     o << "<h2>All claims</h2>\n";
     for (const auto& c : in.outcomes) o << claimHtml(c, "");
     o << "<h2>Slopes of log RMS vs log spp</h2>\n<p class=\"note\">Least squares over per-seed points; 95% interval "
-         "on the slope. Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) in 2D, "
+         "on the slope. Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) in "
+         "2D, "
          "less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
     for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
@@ -277,7 +288,8 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
         for (const auto& p : m.patterns) {
             std::string cell = "–";
             for (const auto& s : in.slopes)
-                if (s.scene == scene.name && s.pattern == p) cell = fmt("%.3f ± %.3f", s.fit.slope, s.fit.slopeHalfWidth);
+                if (s.scene == scene.name && s.pattern == p)
+                    cell = fmt("%.3f ± %.3f", s.fit.slope, s.fit.slopeHalfWidth);
             o << "<td>" << cell << "</td>";
         }
         o << "</tr>\n";
@@ -287,15 +299,18 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
          "<th>size</th><th>load s</th><th>BVH s</th><th>warm-up s</th><th>ref. spp</th><th>ref. s</th>"
          "<th>floor (MSE)</th><th>reference key</th></tr>\n";
     for (const auto& s : r.scenes)
-        o << "<tr><td>" << html(s.name) << "</td><td>" << html(s.file) << "</td><td>" << s.width << "×" << s.height << "</td>"
+        o << "<tr><td>" << html(s.name) << "</td><td>" << html(s.file) << "</td><td>" << s.width << "×" << s.height
+          << "</td>"
           << fmt("<td>%.3f</td><td>%.3f</td><td>%.3f</td><td>%u</td><td>%s</td><td>%.3g</td>", s.loadSeconds,
                  s.buildSeconds, s.warmupSeconds, s.referenceSpp,
                  s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached", s.noiseFloor)
           << "<td>" << html(s.referenceKey) << "</td></tr>\n";
     o << "</table></details>\n";
     o << "<p>Data: <a href=\"results.csv\">results.csv</a> (per seed), <a href=\"cells.csv\">cells.csv</a> (per cell), "
-         "<a href=\"results.json\">results.json</a>; plots as SVG and gnuplot data in <a href=\"plots/plots.gp\">plots/</a>.</p>\n";
-    o << "<details><summary>Matrix " << html(m.path) << "</summary><pre>" << html(m.text) << "</pre></details>\n</body></html>\n";
+         "<a href=\"results.json\">results.json</a>; plots as SVG and gnuplot data in <a "
+         "href=\"plots/plots.gp\">plots/</a>.</p>\n";
+    o << "<details><summary>Matrix " << html(m.path) << "</summary><pre>" << html(m.text)
+      << "</pre></details>\n</body></html>\n";
     writeTextFile((fs::path(dir) / "index.html").string(), o.str());
     return plotsOk;
 }

@@ -22,15 +22,15 @@ bool isReplaceableReportFolder(const std::string& dir) {
 }
 
 ReportStaging::ReportStaging(const std::string& target)
-    : target_(fs::path(target).lexically_normal().string()), temp_(target_.empty() || target_.back() == '/'
-                                                                       ? target_.substr(0, target_.size() - 1)
-                                                                       : target_) {
+    : target_(fs::path(target).lexically_normal().string()),
+      temp_(target_.empty() || target_.back() == '/' ? target_.substr(0, target_.size() - 1) : target_) {
     const std::string leaf = fs::path(temp_.path()).filename().string();
     if (target_.empty() || target_ == "." || target_ == ".." || target_ == "/" || target_.ends_with("/..") ||
         target_.ends_with("/.") || leaf.rfind("...", 0) == 0)
         throw std::runtime_error("-o " + target + ": must name a report folder, not the working folder, a parent or /");
     if (!isReplaceableReportFolder(target_))
-        throw std::runtime_error("-o " + target + ": exists and is not a report folder (no index.html or "
+        throw std::runtime_error("-o " + target +
+                                 ": exists and is not a report folder (no index.html or "
                                  "results.json); refusing to replace it");
     std::error_code ec;
     const fs::path parent = fs::absolute(temp_.path()).parent_path();

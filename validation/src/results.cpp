@@ -34,8 +34,8 @@ void sortRows(std::vector<ResultRow>& rows, const Matrix& matrix) {
     const auto scenes = sceneNames(matrix);
     auto key = [&](const ResultRow& r) {
         size_t seedIndex = size_t(std::find(matrix.seeds.begin(), matrix.seeds.end(), r.seed) - matrix.seeds.begin());
-        return std::make_tuple(indexOf(scenes, r.scene), r.scene, indexOf(matrix.patterns, r.pattern), r.pattern,
-                               r.spp, seedIndex, r.seed);
+        return std::make_tuple(indexOf(scenes, r.scene), r.scene, indexOf(matrix.patterns, r.pattern), r.pattern, r.spp,
+                               seedIndex, r.seed);
     };
     std::stable_sort(rows.begin(), rows.end(), [&](const ResultRow& a, const ResultRow& b) { return key(a) < key(b); });
 }

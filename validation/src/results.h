@@ -26,10 +26,10 @@ struct ResultRow {
     uint64_t nonFinitePixels = 0;              // excluded from the error
     uint64_t nonFiniteSamples = 0;             // reported by the renderer's film
     double renderSeconds = 0, samplerSeconds = 0;
-    double cpuSeconds = 0;                     // thread CPU seconds of the render loop, summed over its workers
+    double cpuSeconds = 0;                             // thread CPU seconds of the render loop, summed over its workers
     std::vector<double> regionMse, regionMseCorrected; // per region of the scene (matrix order), as mse above
-    double flip = NAN;                         // mean LDR-FLIP (67 pixels per degree) against the reference
-    double spectrumRatio = NAN;                // error power high / low frequency: 1 white, > 1 blue
+    double flip = NAN;                                 // mean LDR-FLIP (67 pixels per degree) against the reference
+    double spectrumRatio = NAN;                        // error power high / low frequency: 1 white, > 1 blue
     std::vector<double> regionFlip, regionSpectrumRatio; // per region, as above
 };
 
@@ -41,8 +41,8 @@ struct SceneInfo {
     double warmupSeconds = 0;                 // untimed warm-up renders (one small render per pattern × spp)
     std::string referenceKey;                 // cache key of the reference
     uint32_t referenceSpp = 0;
-    double referenceSeconds = 0;              // 0 when it came from the cache
-    double noiseFloor = 0;                    // E[MSE contribution of the reference's noise]
+    double referenceSeconds = 0; // 0 when it came from the cache
+    double noiseFloor = 0;       // E[MSE contribution of the reference's noise]
 };
 
 // A scene a run could not load or render: its matrix name and the error, file:line first.
@@ -63,13 +63,13 @@ struct Results {
 struct CellAggregate {
     std::string scene, pattern;
     uint32_t spp = 0;
-    Interval rms;                    // of rmsCorrected, t interval, 95%
-    SampleSummary logRms;            // of log(rmsCorrected) over the seeds where it is > 0
-    SampleSummary logRmsMeasured;    // of log(rms), before the floor correction, over the seeds where it is > 0
-    double meanRmsMeasured = 0;      // before the floor correction
+    Interval rms;                 // of rmsCorrected, t interval, 95%
+    SampleSummary logRms;         // of log(rmsCorrected) over the seeds where it is > 0
+    SampleSummary logRmsMeasured; // of log(rms), before the floor correction, over the seeds where it is > 0
+    double meanRmsMeasured = 0;   // before the floor correction
     double meanMse = 0, meanMseCorrected = 0;
     double medianRenderSeconds = 0, medianSamplerSeconds = 0, medianCpuSeconds = 0;
-    double efficiency = 0;           // 1 / (mean corrected MSE · median render seconds)
+    double efficiency = 0; // 1 / (mean corrected MSE · median render seconds)
     int floorLimitedSeeds = 0;
     uint64_t nonFinitePixels = 0;
     size_t seeds = 0;

@@ -159,7 +159,8 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                               base.width, base.height, referenceKey(*scene, refOptions).c_str()));
             Reference ref = loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir);
             if (!ref.cacheProblem.empty())
-                progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem + "): rendered again");
+                progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem +
+                              "): rendered again");
             info.referenceKey = ref.key;
             info.referenceSpp = refOptions.spp;
             info.referenceSeconds = ref.renderSeconds;
@@ -204,7 +205,8 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                             for (int x = px.x; x < px.x + px.w; ++x) sum += flip.flip[size_t(y) * flip.width + x];
                         row.regionFlip.push_back(sum / double(px.w * px.h));
                         row.regionSpectrumRatio.push_back(
-                            errorSpectrum(regionImage(ref.image, ms.regions[ri]), regionImage(r.image, ms.regions[ri])).highOverLow);
+                            errorSpectrum(regionImage(ref.image, ms.regions[ri]), regionImage(r.image, ms.regions[ri]))
+                                .highOverLow);
                         const double mse = regionError(ref.image, r.image, ms.regions[ri]).mse;
                         row.regionMse.push_back(mse);
                         row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
@@ -216,7 +218,8 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     }
                     progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
                                       pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
-                                      row.renderSeconds, row.samplerSeconds, row.floorLimited ? ", floor-limited" : ""));
+                                      row.renderSeconds, row.samplerSeconds,
+                                      row.floorLimited ? ", floor-limited" : ""));
                 }
             }
             results.scenes.push_back(info);

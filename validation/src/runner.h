@@ -12,11 +12,11 @@
 namespace stipple::validation {
 
 struct RunOptions {
-    std::string reportDir;    // crops are written to <reportDir>/crops
-    std::string cacheDir;     // references
-    int threads = 0;          // 0: the matrix's setting
-    int shardIndex = 1, shardCount = 1; // this run does the groups g with g mod n == i − 1
-    bool referencesOnly = false;        // make (or check) the references of this shard's scenes, no cells
+    std::string reportDir;                         // crops are written to <reportDir>/crops
+    std::string cacheDir;                          // references
+    int threads = 0;                               // 0: the matrix's setting
+    int shardIndex = 1, shardCount = 1;            // this run does the groups g with g mod n == i − 1
+    bool referencesOnly = false;                   // make (or check) the references of this shard's scenes, no cells
     std::map<std::string, std::string> unloadable; // scene name -> error found by the preflight: skipped
 };
 

@@ -73,9 +73,10 @@ Fingerprint matrixFingerprint(const Matrix& m) {
     f.add("matrix.reference.pattern", ordered_json(m.reference.pattern).dump());
     f.add("matrix.reference.seed", ordered_json(m.reference.seed).dump());
     const uint32_t cropSpp = m.crop.spp ? m.crop.spp : (m.spp.empty() ? 0 : m.spp.back());
-    f.add("matrix.crop", ordered_json{{"x", m.crop.x}, {"y", m.crop.y}, {"size", m.crop.size},
-                                      {"scale", m.crop.scale}, {"spp", cropSpp}}
-                             .dump());
+    f.add(
+        "matrix.crop",
+        ordered_json{{"x", m.crop.x}, {"y", m.crop.y}, {"size", m.crop.size}, {"scale", m.crop.scale}, {"spp", cropSpp}}
+            .dump());
     ordered_json checks = ordered_json::array();
     for (const auto& c : m.checks) checks.push_back(checkJson(c));
     f.add("matrix.checks", checks.dump());
@@ -145,8 +146,8 @@ void checkShardFingerprints(const Matrix& matrix, const std::vector<std::string>
         const std::string path = (fs::path(dir) / "results.json").string();
         prints.push_back(readFingerprint(path));
         if (prints.back().empty())
-            throw std::runtime_error("merge: " + path +
-                                     " has no fingerprint (written by an older stipple-validate): run that shard again");
+            throw std::runtime_error(
+                "merge: " + path + " has no fingerprint (written by an older stipple-validate): run that shard again");
     }
     for (size_t i = 1; i < dirs.size(); ++i)
         if (auto d = firstDifference(prints[0], prints[i]))
@@ -160,8 +161,9 @@ void checkShardFingerprints(const Matrix& matrix, const std::vector<std::string>
         return f;
     };
     if (auto d = firstDifference(withoutChecks(prints[0]), withoutChecks(matrixFingerprint(matrix)), "matrix."))
-        throw std::runtime_error("merge: the shards ran another matrix than " + matrix.path + ": they differ first in " +
-                                 d->field + ": " + d->a + " (" + dirs[0] + ") vs " + d->b + " (" + matrix.path + ")");
+        throw std::runtime_error("merge: the shards ran another matrix than " + matrix.path +
+                                 ": they differ first in " + d->field + ": " + d->a + " (" + dirs[0] + ") vs " + d->b +
+                                 " (" + matrix.path + ")");
 }
 
 } // namespace stipple::validation

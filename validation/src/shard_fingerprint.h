@@ -61,8 +61,9 @@ std::optional<FingerprintDifference> firstDifference(const Fingerprint& a, const
                                                      const std::string& prefix);
 
 // --merge's gate: every shard folder's fingerprint equals the first's, and the first's "matrix.*" fields but the
-// checks equal those of the matrix given to --merge (whose checks the merge evaluates). Throws std::runtime_error naming the field, both values and both folders
-// (or the matrix file), or the folder whose results.json has no fingerprint.
+// checks equal those of the matrix given to --merge (whose checks the merge evaluates). Throws std::runtime_error
+// naming the field, both values and both folders (or the matrix file), or the folder whose results.json has no
+// fingerprint.
 void checkShardFingerprints(const Matrix& matrix, const std::vector<std::string>& dirs);
 
 } // namespace stipple::validation

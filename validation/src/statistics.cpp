@@ -62,7 +62,7 @@ Interval welchDifference(const SampleSummary& a, const SampleSummary& b, double 
         return r;
     }
     const double va = a.variance / double(a.count), vb = b.variance / double(b.count), se2 = va + vb;
-    if (!(se2 > 0)) {  // both samples constant: the difference is exact
+    if (!(se2 > 0)) { // both samples constant: the difference is exact
         r.halfWidth = 0;
         return r;
     }

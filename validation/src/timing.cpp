@@ -70,8 +70,10 @@ void evaluateTimeRatio(const Check& k, const Matrix& m, const std::vector<Result
             continue;
         }
         const CheckStatus v = ratioVerdict(cpu, k.maxRatio);
-        if (v == CheckStatus::Fail) o.status = CheckStatus::Fail;
-        else if (v == CheckStatus::NotSeparated && o.status == CheckStatus::Pass) o.status = v;
+        if (v == CheckStatus::Fail)
+            o.status = CheckStatus::Fail;
+        else if (v == CheckStatus::NotSeparated && o.status == CheckStatus::Pass)
+            o.status = v;
         o.figures.push_back(fmt("%s: CPU ratio %s; wall ratio %s [%s]%s", s.name.c_str(), ratioText(cpu).c_str(),
                                 ratioText(wall).c_str(), checkStatusName(ratioVerdict(wall, k.maxRatio)),
                                 v == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v)).c_str()));

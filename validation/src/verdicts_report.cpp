@@ -23,7 +23,8 @@ std::string fmt(const char* format, auto... args) {
 
 std::string html(const std::string& s) {
     std::string o;
-    for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
+    for (char c : s)
+        o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
     return o;
 }
 
@@ -42,10 +43,9 @@ std::vector<EfficiencyRanking> rankingsOf(const ReportInputs& in, const MatrixSc
     std::vector<EfficiencyRanking> out;
     out.push_back(rankEfficiency(rows, s.name, spp, patterns, floorFromRows(rows, s.name)));
     for (size_t ri = 0; ri < s.regions.size(); ++ri) {
-        EfficiencyRanking r = rankEfficiency(rows, s.name, spp, patterns, floorFromRows(rows, s.name, int(ri)), true,
-                                             [ri](const ResultRow& row) {
-                                                 return ri < row.regionMse.size() ? row.regionMse[ri] : NAN;
-                                             });
+        EfficiencyRanking r =
+            rankEfficiency(rows, s.name, spp, patterns, floorFromRows(rows, s.name, int(ri)), true,
+                           [ri](const ResultRow& row) { return ri < row.regionMse.size() ? row.regionMse[ri] : NAN; });
         r.region = s.regions[ri].name;
         out.push_back(r);
     }
@@ -58,8 +58,8 @@ std::string sentence(const EfficiencyRanking& r) {
     if (r.ranked.size() == 1) return r.ranked[0].pattern + " alone";
     const auto& st = r.steps[0];
     std::string s = st.separated
-                        ? fmt("%s is the most efficient at equal time, %.2f× %s (95%% %.2f-%.2f)", r.ranked[0].pattern.c_str(),
-                              st.ratio, r.ranked[1].pattern.c_str(), st.lo, st.hi)
+                        ? fmt("%s is the most efficient at equal time, %.2f× %s (95%% %.2f-%.2f)",
+                              r.ranked[0].pattern.c_str(), st.ratio, r.ranked[1].pattern.c_str(), st.lo, st.hi)
                         : fmt("%s and %s lead, not separated (%.2f×, 95%% %.2f-%.2f)", r.ranked[0].pattern.c_str(),
                               r.ranked[1].pattern.c_str(), st.ratio, st.lo, st.hi);
     double lo = 0, hi = 0;
@@ -82,7 +82,9 @@ Perceptual perceptualOf(const std::vector<ResultRow>& rows, const std::string& s
         if (r.scene != scene || r.pattern != pattern || r.spp != spp) continue;
         const size_t i = size_t(region);
         const double f = region < 0 ? r.flip : i < r.regionFlip.size() ? r.regionFlip[i] : NAN;
-        const double q = region < 0 ? r.spectrumRatio : i < r.regionSpectrumRatio.size() ? r.regionSpectrumRatio[i] : NAN;
+        const double q = region < 0                         ? r.spectrumRatio
+                         : i < r.regionSpectrumRatio.size() ? r.regionSpectrumRatio[i]
+                                                            : NAN;
         if (std::isfinite(f)) flip.push_back(f);
         if (std::isfinite(q) && q > 0) logSpectrum.push_back(std::log(q));
     }
@@ -94,7 +96,8 @@ Perceptual perceptualOf(const std::vector<ResultRow>& rows, const std::string& s
 
 std::string studyOf(const Matrix& m, const std::string& scene) {
     for (const auto& k : m.checks)
-        if (k.type == CheckType::EqualTime && (k.scene == scene || k.scene == "all") && !k.study.empty()) return k.study;
+        if (k.type == CheckType::EqualTime && (k.scene == scene || k.scene == "all") && !k.study.empty())
+            return k.study;
     return "";
 }
 
@@ -103,7 +106,7 @@ std::string studyOf(const Matrix& m, const std::string& scene) {
 std::string patternColor(const std::string& pattern) {
     // Okabe–Ito: distinguishable with the common colour-vision deficiencies; the plots use the same.
     static const std::pair<const char*, const char*> colors[] = {
-        {"independent", "#E69F00"}, {"stratified", "#0072B2"}, {"poisson", "#009E73"},
+        {"independent", "#E69F00"},  {"stratified", "#0072B2"}, {"poisson", "#009E73"},
         {"poisson-seed", "#CC79A7"}, {"sobol", "#D55E00"},      {"pmj02", "#56B4E9"}};
     for (const auto& [name, color] : colors)
         if (pattern == name) return color;
@@ -125,13 +128,15 @@ std::string verdictHeadlineHtml(const ReportInputs& in) {
       << "</span> claims: <span class=\"PASS\" id=\"claims-pass\">" << pass << "</span> PASS, <span class=\"FAIL\" "
       << "id=\"claims-fail\">" << fail << "</span> FAIL, <span class=\"NOT\" id=\"claims-not-separated\">" << ns
       << "</span> NOT SEPARATED.</strong></p>\n<p>Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
-      << m.patterns.size() << " patterns × " << m.spp.size() << " spp × " << m.seeds.size() << " seeds. Machine: "
-      << std::thread::hardware_concurrency() << " hardware threads; load average (1, 5, 15 min) when the report was "
-      << "written: " << html(loadAverage()) << ".</p>\n<p>At equal render time (CPU seconds), " << spp << " spp:</p><ul>\n";
+      << m.patterns.size() << " patterns × " << m.spp.size() << " spp × " << m.seeds.size()
+      << " seeds. Machine: " << std::thread::hardware_concurrency()
+      << " hardware threads; load average (1, 5, 15 min) when the report was "
+      << "written: " << html(loadAverage()) << ".</p>\n<p>At equal render time (CPU seconds), " << spp
+      << " spp:</p><ul>\n";
     for (const auto& s : m.scenes) {
         const auto rankings = rankingsOf(in, s, spp);
-        o << "<li><a href=\"#scene-" << safeName(s.name) << "\"><strong>" << html(s.name) << "</strong></a>: "
-          << html(sentence(rankings[0])) << ".";
+        o << "<li><a href=\"#scene-" << safeName(s.name) << "\"><strong>" << html(s.name)
+          << "</strong></a>: " << html(sentence(rankings[0])) << ".";
         const std::string study = studyOf(m, s.name);
         if (!study.empty()) o << " <em>Study: " << html(study) << ".</em>";
         for (size_t i = 1; i < rankings.size(); ++i)
@@ -146,11 +151,14 @@ std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
     const Matrix& m = *in.matrix;
     const uint32_t spp = m.spp.back();
     std::ostringstream o;
-    o << "<h3>Equal-time efficiency and perceptual error at " << spp << " spp</h3>\n<p class=\"note\">Efficiency "
+    o << "<h3>Equal-time efficiency and perceptual error at " << spp
+      << " spp</h3>\n<p class=\"note\">Efficiency "
          "1/(MSE<sub>corrected</sub> · CPU s) per seed, geometric mean over seeds relative to the row's most efficient "
          "pattern, Welch's 95% interval. <em>floor</em>: reference noise floor / the cell's corrected MSE (⚑ above "
-      << fmt("%.0f", 100 * kFloorShareLimit) << "%). <em>heavy</em>: worst seed's RMS ≥ " << fmt("%.0f", kHeavyTailFactor)
-      << "× its best seed's, with the trimmed mean RMS (lowest and highest seed dropped). FLIP: mean LDR-FLIP ± 95% (67 pixels per degree); spectrum: "
+      << fmt("%.0f", 100 * kFloorShareLimit) << "%). <em>heavy</em>: worst seed's RMS ≥ "
+      << fmt("%.0f", kHeavyTailFactor)
+      << "× its best seed's, with the trimmed mean RMS (lowest and highest seed dropped). FLIP: mean LDR-FLIP ± 95% "
+         "(67 pixels per degree); spectrum: "
          "error power at 0.25–0.5 over below 0.125 cycles per pixel (1 white, above 1 blue).</p>\n"
          "<table><tr><th>region</th><th>measure</th>";
     for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
@@ -170,17 +178,21 @@ std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
             }
             double lo = 1, hi = 1;
             const double ratio = e == &r.ranked[0] ? 1.0 : r.ratioOf(p, r.ranked[0].pattern, &lo, &hi);
-            o << "<td>" << (e == &r.ranked[0] ? "<strong>best</strong>" : fmt("%.3g<br><small>(%.3g–%.3g)</small>", ratio, lo, hi))
-              << fmt("<br><small>floor %.1f%%%s</small>", 100 * e->floorShare, e->floorShare > kFloorShareLimit ? " ⚑" : "")
-              << (e->rms.heavyTailed ? fmt("<br><small>heavy ×%.1f, trimmed RMS %.3g</small>", e->rms.maxOverMin,
-                                           e->rms.trimmedMean)
-                                     : "")
+            o << "<td>"
+              << (e == &r.ranked[0] ? "<strong>best</strong>"
+                                    : fmt("%.3g<br><small>(%.3g–%.3g)</small>", ratio, lo, hi))
+              << fmt("<br><small>floor %.1f%%%s</small>", 100 * e->floorShare,
+                     e->floorShare > kFloorShareLimit ? " ⚑" : "")
+              << (e->rms.heavyTailed
+                      ? fmt("<br><small>heavy ×%.1f, trimmed RMS %.3g</small>", e->rms.maxOverMin, e->rms.trimmedMean)
+                      : "")
               << "</td>";
         }
         o << "</tr>\n<tr><td>FLIP, spectrum</td>";
         for (const auto& p : m.patterns) {
             const Perceptual q = perceptualOf(in.results->rows, s.name, p, spp, int(ri) - 1);
-            o << "<td>" << fmt("%.4f<br><small>± %.2g; %.2f</small>", q.flip.mean, q.flip.halfWidth, q.spectrum) << "</td>";
+            o << "<td>" << fmt("%.4f<br><small>± %.2g; %.2f</small>", q.flip.mean, q.flip.halfWidth, q.spectrum)
+              << "</td>";
         }
         o << "</tr>\n";
     }
@@ -194,8 +206,8 @@ std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
         columns.insert(columns.end(), m.patterns.begin(), m.patterns.end());
         for (const auto& c : columns)
             o << "<figure><img class=\"crop\" src=\"" << regionCropFile(s.name, rg.name, c) << "\" alt=\""
-              << html(s.name + " " + rg.name + ", " + c) << "\"><figcaption>" << (c == "reference" ? "reference" : patternHeader(c))
-              << "</figcaption></figure>";
+              << html(s.name + " " + rg.name + ", " + c) << "\"><figcaption>"
+              << (c == "reference" ? "reference" : patternHeader(c)) << "</figcaption></figure>";
         o << "</div>\n";
     }
     return o.str();
@@ -204,7 +216,8 @@ std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
 std::string verdictsText(const ReportInputs& in) {
     const Matrix& m = *in.matrix;
     const uint32_t spp = m.spp.back();
-    std::string s = fmt("equal-time efficiency at %u spp (1/(MSE·CPU s), relative to the best of the row, 95%%):\n", spp);
+    std::string s =
+        fmt("equal-time efficiency at %u spp (1/(MSE·CPU s), relative to the best of the row, 95%%):\n", spp);
     for (const auto& scene : m.scenes)
         for (const auto& r : rankingsOf(in, scene, spp)) {
             s += fmt("  %-13s %-16s", scene.name.c_str(), r.region.empty() ? "whole image" : r.region.c_str());
@@ -220,7 +233,8 @@ std::string verdictsText(const ReportInputs& in) {
     s += fmt("perceptual error at %u spp (mean LDR-FLIP ± 95%%; error spectrum high/low: 1 white, > 1 blue):\n", spp);
     for (const auto& scene : m.scenes)
         for (int ri = -1; ri < int(scene.regions.size()); ++ri) {
-            s += fmt("  %-13s %-16s", scene.name.c_str(), ri < 0 ? "whole image" : scene.regions[size_t(ri)].name.c_str());
+            s += fmt("  %-13s %-16s", scene.name.c_str(),
+                     ri < 0 ? "whole image" : scene.regions[size_t(ri)].name.c_str());
             for (const auto& p : m.patterns) {
                 const Perceptual q = perceptualOf(in.results->rows, scene.name, p, spp, ri);
                 s += fmt("  %s %.4f ± %.2g [%.2f]", p.c_str(), q.flip.mean, q.flip.halfWidth, q.spectrum);

@@ -92,21 +92,21 @@ BOOST_AUTO_TEST_CASE(outcomes_of_synthetic_claims) {
     auto out = evaluateChecks(f.matrix, rows, cells, slopes);
     BOOST_REQUIRE_EQUAL(out.size(), 8u);
     for (const auto& o : out) BOOST_TEST_MESSAGE(formatOutcome(o));
-    BOOST_CHECK(out[0].status == CheckStatus::Pass);         // stratified < independent, separated at 16 and 64
+    BOOST_CHECK(out[0].status == CheckStatus::Pass); // stratified < independent, separated at 16 and 64
     BOOST_CHECK_EQUAL(out[0].figures.size(), 2u);
     BOOST_CHECK(out[1].status == CheckStatus::NotSeparated); // poisson ~ stratified
     BOOST_CHECK(out[1].failsRun);                            // default: not_separated fails
     BOOST_CHECK(out[2].status == CheckStatus::Fail);         // reversed
     BOOST_CHECK(formatOutcome(out[2]).find("> (reversed)") != std::string::npos);
-    BOOST_CHECK(out[3].status == CheckStatus::Pass);         // slope −0.5
-    BOOST_CHECK(out[4].status == CheckStatus::Fail);         // stratified's −0.75 is not −0.5 ± 0.05
+    BOOST_CHECK(out[3].status == CheckStatus::Pass); // slope −0.5
+    BOOST_CHECK(out[4].status == CheckStatus::Fail); // stratified's −0.75 is not −0.5 ± 0.05
     BOOST_CHECK(formatOutcome(out[4]).find("slope -0.750") != std::string::npos);
-    BOOST_CHECK(out[5].status == CheckStatus::Pass);         // 1.02 ≤ 1.05
+    BOOST_CHECK(out[5].status == CheckStatus::Pass); // 1.02 ≤ 1.05
     // Paired ratios 1, 1, 1, 2: geometric mean 1.19 with a 95% interval that straddles 1.05. The run cannot
     // tell, which is not a failure of the claim.
     BOOST_CHECK(out[6].status == CheckStatus::NotSeparated);
     BOOST_CHECK(!out[6].failsRun);
-    BOOST_CHECK(out[7].status == CheckStatus::Fail);         // the 2 s cell breaks the 1.5 s ceiling
+    BOOST_CHECK(out[7].status == CheckStatus::Fail); // the 2 s cell breaks the 1.5 s ceiling
     BOOST_CHECK(formatOutcome(out[7]).find("independent @ 64 spp seed 4: 2.0000s") != std::string::npos);
 }
 
@@ -123,12 +123,12 @@ BOOST_AUTO_TEST_CASE(ordering_compares_geometric_means_of_skewed_rms) {
     auto cells = aggregate(rows);
     const CellAggregate *a = findCell(cells, "box", "stratified", 64), *b = findCell(cells, "box", "independent", 64);
     BOOST_REQUIRE(a && b);
-    BOOST_CHECK(!separatedBelow(a->rms, b->rms));  // the mean-RMS intervals overlap
+    BOOST_CHECK(!separatedBelow(a->rms, b->rms)); // the mean-RMS intervals overlap
     auto out = evaluateChecks(f.matrix, rows, cells, fitSlopes(rows, f.matrix));
     for (const auto& o : out) BOOST_TEST_MESSAGE(formatOutcome(o));
-    BOOST_CHECK(out[0].status == CheckStatus::Pass);          // stratified < independent on log RMS
-    BOOST_CHECK(out[1].status == CheckStatus::NotSeparated);  // poisson = stratified
-    BOOST_CHECK(out[2].status == CheckStatus::Fail);          // independent < stratified is reversed
+    BOOST_CHECK(out[0].status == CheckStatus::Pass);         // stratified < independent on log RMS
+    BOOST_CHECK(out[1].status == CheckStatus::NotSeparated); // poisson = stratified
+    BOOST_CHECK(out[2].status == CheckStatus::Fail);         // independent < stratified is reversed
 
     // A seed at the reference's noise floor (zero corrected RMS, no logarithm): the measured RMS is compared
     // instead. Measured RMS of 0.3 for every stratified seed against the independent ones still separates; with

@@ -43,7 +43,7 @@ BOOST_AUTO_TEST_CASE(ranking_ratio_and_marks) {
     BOOST_CHECK_EQUAL(r.ranked.back().pattern, "slow");
     double lo = 0, hi = 0;
     const double ratio = r.ratioOf("fast", "slow", &lo, &hi);
-    BOOST_CHECK_CLOSE(ratio, 4.0, 2.0);      // within 2%
+    BOOST_CHECK_CLOSE(ratio, 4.0, 2.0); // within 2%
     BOOST_CHECK(lo > 3.8 && hi < 4.2);
     BOOST_CHECK(r.ratioOf("slow", "fast") < 0.26);
     // fast against noisy: not separated (noisy's seeds spread 9× in MSE).

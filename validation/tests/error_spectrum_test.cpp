@@ -43,7 +43,8 @@ BOOST_AUTO_TEST_CASE(white_blue_and_low_frequency_errors) {
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x)
             for (int c = 0; c < 3; ++c)
-                blue.rgb[3 * (y * n + x) + c] = 0.5f + w.rgb[3 * (y * n + x) + c] - w.rgb[3 * (y * n + (x + 1) % n) + c];
+                blue.rgb[3 * (y * n + x) + c] =
+                    0.5f + w.rgb[3 * (y * n + x) + c] - w.rgb[3 * (y * n + (x + 1) % n) + c];
     const ErrorSpectrum b = errorSpectrum(ref, blue);
     BOOST_TEST_MESSAGE("blue " << b.highOverLow);
     BOOST_CHECK_GT(b.highOverLow, 3.0);

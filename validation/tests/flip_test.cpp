@@ -21,9 +21,7 @@ Image uniform(int w, int h, float r, float g, float b) {
 }
 } // namespace
 
-BOOST_AUTO_TEST_CASE(default_pixels_per_degree_is_67) {
-    BOOST_CHECK_CLOSE(kFlipDefaultPixelsPerDegree, 67.02, 0.01);
-}
+BOOST_AUTO_TEST_CASE(default_pixels_per_degree_is_67) { BOOST_CHECK_CLOSE(kFlipDefaultPixelsPerDegree, 67.02, 0.01); }
 
 BOOST_AUTO_TEST_CASE(identical_images_have_zero_error) {
     std::mt19937 rng(7);

@@ -52,7 +52,8 @@ BOOST_AUTO_TEST_CASE(every_bad_matrix_gives_its_message) {
         BOOST_REQUIRE_MESSAGE(first.rfind(tag, 0) == 0, f.filename() << ": first line must be '# expect: ...'");
         const std::string expected = first.substr(tag.size()), msg = loadError(f.string());
         BOOST_TEST_MESSAGE(f.filename().string() << ": " << msg);
-        BOOST_TEST(msg.find(expected) != std::string::npos, f.filename() << ": '" << msg << "' lacks '" << expected << "'");
+        BOOST_TEST(msg.find(expected) != std::string::npos, f.filename()
+                                                                << ": '" << msg << "' lacks '" << expected << "'");
         BOOST_TEST(std::regex_search(msg, place), f.filename() << ": '" << msg << "' names no file:line:column");
     }
 }

@@ -51,7 +51,8 @@ void expectError(const Fixture& f, const std::string& text, std::vector<std::str
         BOOST_ERROR("no error for:\n" + text);
     } catch (const MatrixError& e) {
         std::string msg = e.what();
-        for (const auto& p : pieces) BOOST_CHECK_MESSAGE(msg.find(p) != std::string::npos, "'" << p << "' not in: " << msg);
+        for (const auto& p : pieces)
+            BOOST_CHECK_MESSAGE(msg.find(p) != std::string::npos, "'" << p << "' not in: " << msg);
     }
 }
 
@@ -103,7 +104,8 @@ BOOST_AUTO_TEST_CASE(unknown_names_are_named) {
                 {f.path() + ":6:5", "unknown scene file 'scenes/nope.yaml'"});
     expectError(f, replaced(good, "[independent, stratified, poisson]", "[independent, halton]"),
                 {f.path() + ":7:", "unknown pattern 'halton'", "poisson-seed"});
-    expectError(f, replaced(good, "type: slope", "type: variance"), {f.path() + ":13:13", "unknown check type 'variance'"});
+    expectError(f, replaced(good, "type: slope", "type: variance"),
+                {f.path() + ":13:13", "unknown check type 'variance'"});
     expectError(f, replaced(good, "scene: veach", "scene: cornell"),
                 {f.path() + ":13:27", "unknown scene 'cornell'", "box, veach"});
     expectError(f, replaced(good, "numerator: poisson", "numerator: poisson-seed"),
@@ -134,7 +136,8 @@ BOOST_AUTO_TEST_CASE(missing_file_is_named) {
 BOOST_AUTO_TEST_CASE(regions_and_study_claims) {
     Fixture f;
     const std::string withRegions =
-        replaced(replaced(good, "    height: 24\n", "    height: 24\n    regions: [{ name: shade, rect: [0.1, 0.5, 0.6, 1.0] }]\n"),
+        replaced(replaced(good, "    height: 24\n",
+                          "    height: 24\n    regions: [{ name: shade, rect: [0.1, 0.5, 0.6, 1.0] }]\n"),
                  "  - { type: time_ceiling, seconds: 5 }\n",
                  "  - { type: time_ceiling, seconds: 5 }\n"
                  "  - { type: equal_time, scene: box, order: [stratified, independent], study: \"stratified first\" }\n"
@@ -144,7 +147,7 @@ BOOST_AUTO_TEST_CASE(regions_and_study_claims) {
     BOOST_REQUIRE_EQUAL(m.scenes[0].regions.size(), 1u);
     BOOST_CHECK_EQUAL(m.scenes[0].regions[0].name, "shade");
     BOOST_CHECK_CLOSE(m.scenes[0].regions[0].x1, 0.6, 1e-12);
-    BOOST_CHECK(!m.checks[2].notSeparatedFails);  // time_ratio: an undecided interval does not fail the run
+    BOOST_CHECK(!m.checks[2].notSeparatedFails); // time_ratio: an undecided interval does not fail the run
     BOOST_CHECK(m.checks[4].type == CheckType::EqualTime);
     BOOST_CHECK_EQUAL(m.checks[4].study, "stratified first");
     BOOST_CHECK_EQUAL(m.checks[4].spp, 16u);
@@ -154,9 +157,12 @@ BOOST_AUTO_TEST_CASE(regions_and_study_claims) {
 
     expectError(f, replaced(withRegions, "[0.1, 0.5, 0.6, 1.0]", "[0.7, 0.5, 0.6, 1.0]"),
                 {f.path() + ":6:", "0 ≤ x0 < x1 ≤ 1"});
-    expectError(f, replaced(withRegions, "[0.1, 0.5, 0.6, 1.0]", "[0.1, 0.5]"), {f.path() + ":6:", "rect must be [x0, y0, x1, y1]"});
+    expectError(f, replaced(withRegions, "[0.1, 0.5, 0.6, 1.0]", "[0.1, 0.5]"),
+                {f.path() + ":6:", "rect must be [x0, y0, x1, y1]"});
     expectError(f, replaced(withRegions, "region: shade", "region: glow"),
                 {f.path() + ":18:", "unknown region 'glow' of scene box", "shade"});
-    expectError(f, replaced(withRegions, "metric: flip", "metric: ssim"), {f.path() + ":18:", "metric must be mse or flip"});
-    expectError(f, replaced(withRegions, "study: \"stratified first\"", "studdy: x"), {f.path() + ":17:", "unknown key 'studdy'"});
+    expectError(f, replaced(withRegions, "metric: flip", "metric: ssim"),
+                {f.path() + ":18:", "metric must be mse or flip"});
+    expectError(f, replaced(withRegions, "study: \"stratified first\"", "studdy: x"),
+                {f.path() + ":17:", "unknown key 'studdy'"});
 }

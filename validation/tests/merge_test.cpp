@@ -85,9 +85,8 @@ BOOST_AUTO_TEST_CASE(duplicate_row_names_the_folder) {
     Shards s;
     const std::string a = s.shard("a", {{"independent", 1}, {"independent", 2}, {"stratified", 1}});
     const std::string b = s.shard("b", {{"stratified", 1}, {"stratified", 2}});
-    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error, [&](const auto& e) {
-        return mentions(e, b) && mentions(e, "appears in two shards");
-    });
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error,
+                          [&](const auto& e) { return mentions(e, b) && mentions(e, "appears in two shards"); });
 }
 
 BOOST_AUTO_TEST_CASE(renderer_versions_must_agree) {

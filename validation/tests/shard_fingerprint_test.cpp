@@ -21,10 +21,11 @@ struct Fixture {
     Fixture() {
         fs::create_directories(dir);
         std::ofstream(dir / "box.yaml") << "name: box\n";
-        matrix = parseMatrix("scenes:\n  - { file: box.yaml, name: box, width: 16 }\npatterns: [independent, stratified]\n"
-                             "spp: [1, 4]\nseeds: 4\nreference: { spp: 16, seed: 7 }\n"
-                             "checks:\n  - { type: time_ceiling, seconds: 30 }\n",
-                             (dir / "m.yaml").string(), test::kVocabulary);
+        matrix =
+            parseMatrix("scenes:\n  - { file: box.yaml, name: box, width: 16 }\npatterns: [independent, stratified]\n"
+                        "spp: [1, 4]\nseeds: 4\nreference: { spp: 16, seed: 7 }\n"
+                        "checks:\n  - { type: time_ceiling, seconds: 30 }\n",
+                        (dir / "m.yaml").string(), test::kVocabulary);
     }
     ~Fixture() { fs::remove_all(dir); }
     SceneFingerprint box() const {
@@ -125,9 +126,10 @@ BOOST_FIXTURE_TEST_CASE(round_trip_and_merge_gate, Fixture) {
     }
     // No fingerprint (an older results.json): refused, naming the file.
     std::string old = shard("old", Fingerprint{});
-    BOOST_CHECK_EXCEPTION(checkShardFingerprints(matrix, {s1, old}), std::runtime_error, [&](const std::runtime_error& e) {
-        return std::string(e.what()).find(old + "/results.json has no fingerprint") != std::string::npos;
-    });
+    BOOST_CHECK_EXCEPTION(
+        checkShardFingerprints(matrix, {s1, old}), std::runtime_error, [&](const std::runtime_error& e) {
+            return std::string(e.what()).find(old + "/results.json has no fingerprint") != std::string::npos;
+        });
     // Only the checks edited: the merge evaluates its own.
     Matrix newClaims = matrix;
     newClaims.checks.clear();
@@ -135,7 +137,8 @@ BOOST_FIXTURE_TEST_CASE(round_trip_and_merge_gate, Fixture) {
     // The shards agree but --merge is given another matrix.
     Matrix edited = matrix;
     edited.spp = {1, 8};
-    BOOST_CHECK_EXCEPTION(checkShardFingerprints(edited, {s1, s2}), std::runtime_error, [&](const std::runtime_error& e) {
-        return std::string(e.what()).find("matrix.spp: [1,4] (" + s1 + ") vs [1,8]") != std::string::npos;
-    });
+    BOOST_CHECK_EXCEPTION(
+        checkShardFingerprints(edited, {s1, s2}), std::runtime_error, [&](const std::runtime_error& e) {
+            return std::string(e.what()).find("matrix.spp: [1,4] (" + s1 + ") vs [1,8]") != std::string::npos;
+        });
 }

@@ -43,7 +43,7 @@ BOOST_AUTO_TEST_CASE(welch_interval_known_answer) {
     const double dof = (625.0 / 144.0) / ((25.0 / 144.0 + 25.0 / 9.0) / 3.0);
     BOOST_CHECK_CLOSE(dof, 4.4117647, 1e-5);
     BOOST_CHECK_CLOSE(d.halfWidth, studentTQuantile(0.975, dof) * std::sqrt(25.0 / 12.0), 1e-9);
-    BOOST_CHECK(d.lo() < 0 && d.hi() > 0);  // 2.5 apart, but the samples are too spread to tell at 95%
+    BOOST_CHECK(d.lo() < 0 && d.hi() > 0); // 2.5 apart, but the samples are too spread to tell at 95%
     BOOST_CHECK(std::isnan(welchDifference(summarize({1}), b).halfWidth));
     BOOST_CHECK_EQUAL(welchDifference(summarize({1, 1}), summarize({2, 2})).halfWidth, 0.0);
 }

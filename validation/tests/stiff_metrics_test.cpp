@@ -77,14 +77,15 @@ BOOST_AUTO_TEST_CASE(inf_and_nan_pixels_are_counted_and_left_out) {
     img.pixel(0, 0)[0] = kInf;
     img.pixel(1, 0)[1] = -kInf;
     img.pixel(2, 0)[2] = kNaN;
-    ref.pixel(3, 3)[0] = kNaN;  // a bad reference pixel is left out too
-    img.pixel(3, 3)[0] = kNaN;  // both bad: still one pixel
+    ref.pixel(3, 3)[0] = kNaN; // a bad reference pixel is left out too
+    img.pixel(3, 3)[0] = kNaN; // both bad: still one pixel
     ImageError e = compareImages(ref, img);
     BOOST_TEST(e.nonFinitePixels == 4u);
     BOOST_TEST(e.pixels == 12u);
     BOOST_TEST(e.mse == 3.0); // exactly the finite pixels' value: nothing non-finite averaged in
     // Finite but huge: the difference of two float extremes squares to ~1e77 in double, still finite.
-    Image big = filled(2, 2, std::numeric_limits<float>::max()), small = filled(2, 2, -std::numeric_limits<float>::max());
+    Image big = filled(2, 2, std::numeric_limits<float>::max()),
+          small = filled(2, 2, -std::numeric_limits<float>::max());
     e = compareImages(big, small);
     BOOST_TEST(std::isfinite(e.mse));
     BOOST_TEST(e.nonFinitePixels == 0u);
@@ -147,8 +148,9 @@ BOOST_AUTO_TEST_CASE(zero_and_undefined_errors_downstream) {
     Results results;
     results.matrixName = "stiff";
     results.rows = rows;
-    const std::string path = (std::filesystem::temp_directory_path() /
-                              ("stipple-stiff-results-" + std::to_string(getpid()) + ".json")).string();
+    const std::string path =
+        (std::filesystem::temp_directory_path() / ("stipple-stiff-results-" + std::to_string(getpid()) + ".json"))
+            .string();
     writeResultsJson(path, results, cells, slopes, Json::array());
     Results back = readResultsJson(path);
     std::filesystem::remove(path);

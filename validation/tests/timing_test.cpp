@@ -54,7 +54,8 @@ BOOST_AUTO_TEST_CASE(verdicts) {
     BOOST_CHECK(ratioVerdict(n, 1.05) == CheckStatus::NotSeparated);
     // A single pair has no interval: NOT SEPARATED, never PASS or FAIL on one number.
     auto one = pairs({2}, {1}, {2}, {1});
-    BOOST_CHECK(ratioVerdict(pairedTimeRatio(one, "s", "a", "b", 64, TimeBasis::Cpu), 1.05) == CheckStatus::NotSeparated);
+    BOOST_CHECK(ratioVerdict(pairedTimeRatio(one, "s", "a", "b", 64, TimeBasis::Cpu), 1.05) ==
+                CheckStatus::NotSeparated);
 }
 
 BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {

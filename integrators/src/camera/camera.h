@@ -25,11 +25,11 @@ struct CameraDesc {
 };
 
 struct CameraWiSample {
-    Spectrum We;         // importance
-    Vec3 wi;             // from the reference point towards the lens point
-    float pdf = 0;       // solid angle at the reference point
-    Vec3 pLens;          // the lens point (world)
-    Vec3 nLens;          // the lens normal (camera forward)
+    Spectrum We;   // importance
+    Vec3 wi;       // from the reference point towards the lens point
+    float pdf = 0; // solid angle at the reference point
+    Vec3 pLens;    // the lens point (world)
+    Vec3 nLens;    // the lens normal (camera forward)
     float distance = 0;
     Point2 raster;
 };
@@ -62,8 +62,8 @@ private:
 
     int width_, height_;
     Vec3 position_, right_, up_, forward_;
-    float halfW_, halfH_;        // image plane half-extents at distance 1
-    float imagePlaneArea_;       // at distance 1
+    float halfW_, halfH_;  // image plane half-extents at distance 1
+    float imagePlaneArea_; // at distance 1
     float lensRadius_ = 0, focusDistance_ = 1;
 };
 

@@ -25,10 +25,28 @@ struct Vec3 {
     Vec3 operator-(const Vec3& b) const { return {x - b.x, y - b.y, z - b.z}; }
     Vec3 operator-() const { return {-x, -y, -z}; }
     Vec3 operator*(float s) const { return {x * s, y * s, z * s}; }
-    Vec3 operator/(float s) const { float r = 1.0f / s; return {x * r, y * r, z * r}; }
-    Vec3& operator+=(const Vec3& b) { x += b.x; y += b.y; z += b.z; return *this; }
-    Vec3& operator-=(const Vec3& b) { x -= b.x; y -= b.y; z -= b.z; return *this; }
-    Vec3& operator*=(float s) { x *= s; y *= s; z *= s; return *this; }
+    Vec3 operator/(float s) const {
+        float r = 1.0f / s;
+        return {x * r, y * r, z * r};
+    }
+    Vec3& operator+=(const Vec3& b) {
+        x += b.x;
+        y += b.y;
+        z += b.z;
+        return *this;
+    }
+    Vec3& operator-=(const Vec3& b) {
+        x -= b.x;
+        y -= b.y;
+        z -= b.z;
+        return *this;
+    }
+    Vec3& operator*=(float s) {
+        x *= s;
+        y *= s;
+        z *= s;
+        return *this;
+    }
 };
 inline Vec3 operator*(float s, const Vec3& v) { return v * s; }
 inline float dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -59,10 +77,28 @@ struct Spectrum {
         return {s.r != 0 ? r / s.r : 0, s.g != 0 ? g / s.g : 0, s.b != 0 ? b / s.b : 0};
     }
     Spectrum operator*(float s) const { return {r * s, g * s, b * s}; }
-    Spectrum operator/(float s) const { float i = 1.0f / s; return {r * i, g * i, b * i}; }
-    Spectrum& operator+=(const Spectrum& s) { r += s.r; g += s.g; b += s.b; return *this; }
-    Spectrum& operator*=(const Spectrum& s) { r *= s.r; g *= s.g; b *= s.b; return *this; }
-    Spectrum& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+    Spectrum operator/(float s) const {
+        float i = 1.0f / s;
+        return {r * i, g * i, b * i};
+    }
+    Spectrum& operator+=(const Spectrum& s) {
+        r += s.r;
+        g += s.g;
+        b += s.b;
+        return *this;
+    }
+    Spectrum& operator*=(const Spectrum& s) {
+        r *= s.r;
+        g *= s.g;
+        b *= s.b;
+        return *this;
+    }
+    Spectrum& operator*=(float s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     bool isBlack() const { return r == 0 && g == 0 && b == 0; }
     float maxComponent() const { return std::max({r, g, b}); }
     float average() const { return (r + g + b) * (1.0f / 3.0f); }

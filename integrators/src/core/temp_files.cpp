@@ -57,8 +57,7 @@ extern "C" void onSignal(int sig) {
 
 void cleanupThread() {
     unsigned char b = 0;
-    while (read(signalPipe[0], &b, 1) < 0 && errno == EINTR) {
-    }
+    while (read(signalPipe[0], &b, 1) < 0 && errno == EINTR) {}
     std::lock_guard hold(holdMutex());
     {
         std::lock_guard lock(registryMutex());
@@ -170,12 +169,8 @@ void TempPath::release() {
     registry().erase(path_);
 }
 
-SignalHold::SignalHold() {
-    holdMutex().lock();
-}
+SignalHold::SignalHold() { holdMutex().lock(); }
 
-SignalHold::~SignalHold() {
-    holdMutex().unlock();
-}
+SignalHold::~SignalHold() { holdMutex().unlock(); }
 
 } // namespace stipple::render

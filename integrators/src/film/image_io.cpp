@@ -60,9 +60,9 @@ void toDisplay(OIIO::ImageBuf& buffer) {
     bool ok;
     if (ocio && *ocio) {
         const char* linear = config.getColorSpaceNameByRole("scene_linear");
-        ok = OIIO::ImageBufAlgo::ociodisplay(buffer, buffer, config.getDefaultDisplayName(),
-                                             config.getDefaultViewName(), linear ? linear : "linear", "", false, "",
-                                             "", &config);
+        ok =
+            OIIO::ImageBufAlgo::ociodisplay(buffer, buffer, config.getDefaultDisplayName(), config.getDefaultViewName(),
+                                            linear ? linear : "linear", "", false, "", "", &config);
     } else {
         ok = OIIO::ImageBufAlgo::colorconvert(buffer, buffer, "linear", "sRGB", false, "", "", &config);
     }

@@ -18,7 +18,6 @@ std::string safeOutputStem(const std::string& sceneName);
 // Writes `exrPath` (float EXR with metadata) and the PNG beside it (same stem), all or nothing.
 // Returns the PNG path.
 std::string publishRenderOutputs(const std::string& exrPath, const Image& image,
-                                 const std::vector<std::pair<std::string, std::string>>& metadata,
-                                 float exposureStops);
+                                 const std::vector<std::pair<std::string, std::string>>& metadata, float exposureStops);
 
 } // namespace stipple::render

@@ -17,8 +17,9 @@ public:
     DirectIntegrator(const RenderScene& scene, const IntegratorSettings& s, DirectStrategy strategy)
         : scene_(scene), maxDepth_(s.maxDepth), k_(std::max(1u, s.lightSamples)), strategy_(strategy) {}
     const char* name() const override {
-        return strategy_ == DirectStrategy::Mis ? "direct"
-                                                : (strategy_ == DirectStrategy::LightOnly ? "direct-light" : "direct-bsdf");
+        return strategy_ == DirectStrategy::Mis
+                   ? "direct"
+                   : (strategy_ == DirectStrategy::LightOnly ? "direct-light" : "direct-bsdf");
     }
 
     void declareDimensions(SampleLayout& layout) override {

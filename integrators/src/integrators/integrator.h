@@ -25,8 +25,8 @@ struct TileContext {
 };
 
 struct IntegratorSettings {
-    int maxDepth = 8;           // bounces; 0 = emitters seen directly only
-    uint32_t lightSamples = 1;  // direct: k light and k BSDF samples per camera sample
+    int maxDepth = 8;          // bounces; 0 = emitters seen directly only
+    uint32_t lightSamples = 1; // direct: k light and k BSDF samples per camera sample
 };
 
 class Integrator {

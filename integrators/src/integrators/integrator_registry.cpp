@@ -18,18 +18,14 @@ struct Entry {
 
 // The one list of integrators: names for help texts and validation come from here.
 const Entry kIntegrators[] = {
-    {"path", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
-         return makePathIntegrator(s, o);
-     }},
-    {"direct", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
-         return makeDirectIntegrator(s, o, DirectStrategy::Mis);
-     }},
-    {"direct-light", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
-         return makeDirectIntegrator(s, o, DirectStrategy::LightOnly);
-     }},
-    {"direct-bsdf", [](const RenderScene& s, const Camera&, const IntegratorSettings& o, const std::string&) {
-         return makeDirectIntegrator(s, o, DirectStrategy::BsdfOnly);
-     }},
+    {"path", [](const RenderScene& s, const Camera&, const IntegratorSettings& o,
+                const std::string&) { return makePathIntegrator(s, o); }},
+    {"direct", [](const RenderScene& s, const Camera&, const IntegratorSettings& o,
+                  const std::string&) { return makeDirectIntegrator(s, o, DirectStrategy::Mis); }},
+    {"direct-light", [](const RenderScene& s, const Camera&, const IntegratorSettings& o,
+                        const std::string&) { return makeDirectIntegrator(s, o, DirectStrategy::LightOnly); }},
+    {"direct-bsdf", [](const RenderScene& s, const Camera&, const IntegratorSettings& o,
+                       const std::string&) { return makeDirectIntegrator(s, o, DirectStrategy::BsdfOnly); }},
     {"bdpt", makeBdptIntegrator},
 };
 

@@ -156,8 +156,10 @@ bool Light::sampleLe(Point2 uPos, Point2 uDir, LightLeSample& out) const {
 void Light::pdfLe(const Vec3& n, const Vec3& w, float& pdfPos, float& pdfDir) const {
     pdfPos = 1 / area_;
     float c = dot(n, w);
-    if (twoSided_) pdfDir = cosineHemispherePdf(std::abs(c)) * 0.5f;
-    else pdfDir = c > 0 ? cosineHemispherePdf(c) : 0.0f;
+    if (twoSided_)
+        pdfDir = cosineHemispherePdf(std::abs(c)) * 0.5f;
+    else
+        pdfDir = c > 0 ? cosineHemispherePdf(c) : 0.0f;
 }
 
 } // namespace stipple::render

@@ -13,17 +13,17 @@
 namespace stipple::render {
 
 struct LightLiSample {
-    Spectrum L;     // radiance arriving at the reference point (before visibility)
-    Vec3 wi;        // from the reference point to the light point
-    float pdf = 0;  // solid angle at the reference point
-    Vec3 p, n;      // light point and its normal
+    Spectrum L;    // radiance arriving at the reference point (before visibility)
+    Vec3 wi;       // from the reference point to the light point
+    float pdf = 0; // solid angle at the reference point
+    Vec3 p, n;     // light point and its normal
     float distance = 0;
 };
 
 struct LightLeSample {
     Spectrum L;
-    Ray ray;        // leaves the light point
-    Vec3 n;         // light normal at the origin (oriented to the side the ray leaves)
+    Ray ray;          // leaves the light point
+    Vec3 n;           // light normal at the origin (oriented to the side the ray leaves)
     float pdfPos = 0; // area measure
     float pdfDir = 0; // solid angle
 };
@@ -44,9 +44,7 @@ public:
     float power() const;
 
     // Radiance leaving point p (normal n) in direction w.
-    Spectrum L(const Vec3& n, const Vec3& w) const {
-        return (twoSided_ || dot(n, w) > 0) ? L_ : Spectrum();
-    }
+    Spectrum L(const Vec3& n, const Vec3& w) const { return (twoSided_ || dot(n, w) > 0) ? L_ : Spectrum(); }
     // Samples a point seen from ref; false when the sample carries nothing.
     bool sampleLi(const Vec3& ref, Point2 u, LightLiSample& out) const;
     // Solid-angle density of sampleLi at ref for the light point p with normal n.

@@ -50,8 +50,7 @@ float Material::plasticCoatProbability(float cosThetaO) const {
 
 Spectrum Material::f(Vec3 wo, Vec3 wi, TransportMode) const {
     switch (type) {
-    case MaterialType::Diffuse:
-        return sameHemisphere(wo, wi) ? albedo * kInvPi : Spectrum();
+    case MaterialType::Diffuse: return sameHemisphere(wo, wi) ? albedo * kInvPi : Spectrum();
     case MaterialType::Conductor: {
         toUpper(wo, wi);
         if (wi.z <= 0) return {};
@@ -70,16 +69,14 @@ Spectrum Material::f(Vec3 wo, Vec3 wi, TransportMode) const {
         return albedo * (kInvPi * t) + Spectrum(spec);
     }
     case MaterialType::Mirror:
-    case MaterialType::Dielectric:
-        return {};
+    case MaterialType::Dielectric: return {};
     }
     return {};
 }
 
 float Material::pdf(Vec3 wo, Vec3 wi) const {
     switch (type) {
-    case MaterialType::Diffuse:
-        return sameHemisphere(wo, wi) ? cosineHemispherePdf(std::abs(wi.z)) : 0;
+    case MaterialType::Diffuse: return sameHemisphere(wo, wi) ? cosineHemispherePdf(std::abs(wi.z)) : 0;
     case MaterialType::Conductor:
         toUpper(wo, wi);
         if (wi.z <= 0) return 0;
@@ -91,8 +88,7 @@ float Material::pdf(Vec3 wo, Vec3 wi) const {
         return pc * microfacetReflectionPdf(GGX(roughness), wo, wi) + (1 - pc) * cosineHemispherePdf(wi.z);
     }
     case MaterialType::Mirror:
-    case MaterialType::Dielectric:
-        return 0;
+    case MaterialType::Dielectric: return 0;
     }
     return 0;
 }

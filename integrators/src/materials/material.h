@@ -42,15 +42,14 @@ enum class MaterialType { Diffuse, Conductor, Plastic, Mirror, Dielectric };
 
 struct Material {
     MaterialType type = MaterialType::Diffuse;
-    Spectrum albedo{0.5f};      // diffuse: albedo; plastic: the diffuse base; mirror: reflectance
-    float roughness = 0.1f;     // GGX alpha, conductor and plastic, in [0.001, 1]
-    float ior = 1.5f;           // plastic coat and dielectric
+    Spectrum albedo{0.5f};           // diffuse: albedo; plastic: the diffuse base; mirror: reflectance
+    float roughness = 0.1f;          // GGX alpha, conductor and plastic, in [0.001, 1]
+    float ior = 1.5f;                // plastic coat and dielectric
     Spectrum eta{0.2f, 0.92f, 1.1f}; // conductor
     Spectrum k{3.9f, 2.45f, 2.14f};  // conductor
 
     Spectrum f(Vec3 wo, Vec3 wi, TransportMode mode = TransportMode::Radiance) const;
-    bool sample(Vec3 wo, float uc, Point2 u, BsdfSample& out,
-                TransportMode mode = TransportMode::Radiance) const;
+    bool sample(Vec3 wo, float uc, Point2 u, BsdfSample& out, TransportMode mode = TransportMode::Radiance) const;
     float pdf(Vec3 wo, Vec3 wi) const;
 
     // Whether sample() reads its lobe-choice number uc (the integrator then declares a "bsdf.lobe" dimension).

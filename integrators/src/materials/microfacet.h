@@ -31,9 +31,7 @@ public:
     // Height-correlated masking-shadowing.
     float G(const Vec3& wo, const Vec3& wi) const { return 1 / (1 + Lambda(wo) + Lambda(wi)); }
     // Distribution of visible normals from w; pdf of Sample_wm (solid angle of wm).
-    float D(const Vec3& w, const Vec3& wm) const {
-        return G1(w) / absCosTheta(w) * D(wm) * std::abs(dot(w, wm));
-    }
+    float D(const Vec3& w, const Vec3& wm) const { return G1(w) / absCosTheta(w) * D(wm) * std::abs(dot(w, wm)); }
     float pdf(const Vec3& w, const Vec3& wm) const { return D(w, wm); }
 
     // Samples a visible normal seen from w (any hemisphere; the result is in the upper one).

@@ -13,7 +13,8 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     static const std::string kBlueNoise = "+blue-noise";
     std::string name = pattern;
     uint32_t flags = 0;
-    if (name.size() > kBlueNoise.size() && name.compare(name.size() - kBlueNoise.size(), kBlueNoise.size(), kBlueNoise) == 0) {
+    if (name.size() > kBlueNoise.size() &&
+        name.compare(name.size() - kBlueNoise.size(), kBlueNoise.size(), kBlueNoise) == 0) {
         name.resize(name.size() - kBlueNoise.size());
         flags |= STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
     }

@@ -45,7 +45,7 @@ private:
     friend class PixelSampler;
     friend class SampleView;
     std::vector<float> values_;
-    std::vector<size_t> offset_; // per dimension, start of its N*k*arity floats
+    std::vector<size_t> offset_;   // per dimension, start of its N*k*arity floats
     std::vector<uint32_t> stride_; // per dimension, k*arity floats per pixel sample
     std::vector<uint32_t> arity_;
 };

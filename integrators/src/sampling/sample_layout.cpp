@@ -21,8 +21,8 @@ std::string SampleLayout::describe() const {
     std::string out;
     for (size_t i = 0; i < dims_.size(); ++i) {
         const Dimension& d = dims_[i];
-        out += std::to_string(i) + " " + d.name + " " + std::to_string(d.arity) + "D x" + std::to_string(d.count) +
-               "\n";
+        out +=
+            std::to_string(i) + " " + d.name + " " + std::to_string(d.arity) + "D x" + std::to_string(d.count) + "\n";
     }
     return out;
 }

@@ -31,7 +31,6 @@ std::string exeDirectory() {
 // Size of the first released table (ABI 1.0): everything up to sampler_sample_independent.
 constexpr size_t kMinimumApiSize = sizeof(stipple_api);
 
-
 } // namespace
 
 // Loaded libraries stay loaded for the life of the process (a table pointer may be held anywhere).
@@ -82,8 +81,9 @@ const ShimLibrary& ShimLibrary::get(const std::string& explicitPath) {
         }
         if (api->struct_size < kMinimumApiSize || api->abi_major != STIPPLE_ABI_MAJOR) {
             tried += "\n  " + path + " (" + origin + "): function table of size " + std::to_string(api->struct_size) +
-                     " and ABI major " + std::to_string(api->abi_major) + "; expected size >= " +
-                     std::to_string(kMinimumApiSize) + " and major " + std::to_string(STIPPLE_ABI_MAJOR);
+                     " and ABI major " + std::to_string(api->abi_major) +
+                     "; expected size >= " + std::to_string(kMinimumApiSize) + " and major " +
+                     std::to_string(STIPPLE_ABI_MAJOR);
             dlclose(handle);
             break;
         }
@@ -103,7 +103,7 @@ std::string ShimLibrary::version() const {
 }
 
 std::string ShimLibrary::identity() const {
-    std::call_once(identityOnce_, [this] { identity_ = hashIdentity(); });  // once: the loaded code does not change
+    std::call_once(identityOnce_, [this] { identity_ = hashIdentity(); }); // once: the loaded code does not change
     return identity_;
 }
 

@@ -31,9 +31,13 @@ PlyType plyType(const std::string& s) {
 
 size_t plySize(PlyType t) {
     switch (t) {
-    case PlyType::Int8: case PlyType::UInt8: return 1;
-    case PlyType::Int16: case PlyType::UInt16: return 2;
-    case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
+    case PlyType::Int8:
+    case PlyType::UInt8: return 1;
+    case PlyType::Int16:
+    case PlyType::UInt16: return 2;
+    case PlyType::Int32:
+    case PlyType::UInt32:
+    case PlyType::Float32: return 4;
     case PlyType::Float64: return 8;
     default: return 0;
     }
@@ -61,14 +65,49 @@ bool readBinary(const char*& cur, const char* end, PlyType t, double& v) {
     std::memcpy(buf, cur, n);
     cur += n;
     switch (t) {
-    case PlyType::Int8: { int8_t x; std::memcpy(&x, buf, 1); v = x; break; }
+    case PlyType::Int8: {
+        int8_t x;
+        std::memcpy(&x, buf, 1);
+        v = x;
+        break;
+    }
     case PlyType::UInt8: v = buf[0]; break;
-    case PlyType::Int16: { int16_t x; std::memcpy(&x, buf, 2); v = x; break; }
-    case PlyType::UInt16: { uint16_t x; std::memcpy(&x, buf, 2); v = x; break; }
-    case PlyType::Int32: { int32_t x; std::memcpy(&x, buf, 4); v = x; break; }
-    case PlyType::UInt32: { uint32_t x; std::memcpy(&x, buf, 4); v = x; break; }
-    case PlyType::Float32: { float x; std::memcpy(&x, buf, 4); v = x; break; }
-    case PlyType::Float64: { double x; std::memcpy(&x, buf, 8); v = x; break; }
+    case PlyType::Int16: {
+        int16_t x;
+        std::memcpy(&x, buf, 2);
+        v = x;
+        break;
+    }
+    case PlyType::UInt16: {
+        uint16_t x;
+        std::memcpy(&x, buf, 2);
+        v = x;
+        break;
+    }
+    case PlyType::Int32: {
+        int32_t x;
+        std::memcpy(&x, buf, 4);
+        v = x;
+        break;
+    }
+    case PlyType::UInt32: {
+        uint32_t x;
+        std::memcpy(&x, buf, 4);
+        v = x;
+        break;
+    }
+    case PlyType::Float32: {
+        float x;
+        std::memcpy(&x, buf, 4);
+        v = x;
+        break;
+    }
+    case PlyType::Float64: {
+        double x;
+        std::memcpy(&x, buf, 8);
+        v = x;
+        break;
+    }
     default: return false;
     }
     return true;
@@ -88,8 +127,8 @@ bool readAscii(const char*& cur, const char* end, double& v) {
 // `where` is only called to build an error message.
 template <typename Where>
 void addPolygon(TriangleMesh& mesh, const std::vector<long long>& idx, size_t vertexCount, const Where& where) {
-    if (idx.size() < 3) throw MeshFileError(where() + ": a face with " + std::to_string(idx.size()) +
-                                            " vertices; expected at least 3");
+    if (idx.size() < 3)
+        throw MeshFileError(where() + ": a face with " + std::to_string(idx.size()) + " vertices; expected at least 3");
     for (long long i : idx)
         if (i < 0 || size_t(i) >= vertexCount)
             throw MeshFileError(where() + ": vertex index " + std::to_string(i) + " out of range [0, " +
@@ -126,9 +165,12 @@ TriangleMesh readPly(const std::string& path) {
         if (word == "format") {
             std::string fmt;
             ls >> fmt;
-            if (fmt == "ascii") binary = false;
-            else if (fmt == "binary_little_endian") binary = true;
-            else throw MeshFileError(where() + ": format '" + fmt + "'; expected ascii or binary_little_endian");
+            if (fmt == "ascii")
+                binary = false;
+            else if (fmt == "binary_little_endian")
+                binary = true;
+            else
+                throw MeshFileError(where() + ": format '" + fmt + "'; expected ascii or binary_little_endian");
         } else if (word == "element") {
             PlyElement e;
             long long n = -1;
@@ -201,7 +243,8 @@ TriangleMesh readPly(const std::string& path) {
                     lineEnd = static_cast<const char*>(std::memchr(cur, '\n', size_t(dataEnd - cur)));
                     if (!lineEnd) lineEnd = dataEnd;
                     ++lineNo;
-                    if (std::string_view(cur, size_t(lineEnd - cur)).find_first_not_of(" \t\r") != std::string_view::npos)
+                    if (std::string_view(cur, size_t(lineEnd - cur)).find_first_not_of(" \t\r") !=
+                        std::string_view::npos)
                         break;
                     cur = lineEnd < dataEnd ? lineEnd + 1 : dataEnd;
                 }
@@ -231,13 +274,16 @@ TriangleMesh readPly(const std::string& path) {
             }
             if (!binary) cur = lineEnd < dataEnd ? lineEnd + 1 : dataEnd;
             if (e.name == "vertex") {
-                Vec3 v{float(values[size_t(ix)]), float(values[size_t(iy)]), float(values[size_t(iz)])}; // braces: with parentheses this parses as a function declaration (clang rejects it)
+                Vec3 v{float(values[size_t(ix)]), float(values[size_t(iy)]),
+                       float(values[size_t(iz)])}; // braces: with parentheses this parses as a function declaration
+                                                   // (clang rejects it)
                 if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
                     throw MeshFileError(elementWhere() + ": non-finite vertex");
                 mesh.positions.push_back(v);
             } else if (e.name == "face") {
-                if (face.size() > 4) throw MeshFileError(elementWhere() + ": a face with " + std::to_string(face.size()) +
-                                                         " vertices; expected triangles or quads");
+                if (face.size() > 4)
+                    throw MeshFileError(elementWhere() + ": a face with " + std::to_string(face.size()) +
+                                        " vertices; expected triangles or quads");
                 addPolygon(mesh, face, vertexCount, elementWhere);
             }
         }
@@ -288,7 +334,7 @@ TriangleMesh readObj(const std::string& path) {
 TriangleMesh readMeshFile(const std::string& path) {
     // A bound on the file before any parsing: devices and FIFOs never start, huge files fail at once.
     {
-        struct stat st{};
+        struct stat st {};
         if (::stat(path.c_str(), &st) != 0) throw MeshFileError(path + ": cannot open file");
         if (!S_ISREG(st.st_mode)) throw MeshFileError(path + ": not a regular file");
         if (uint64_t(st.st_size) > limits::kMaxMeshFileBytes)

@@ -123,8 +123,9 @@ RTCRay makeRay(const Ray& r) {
 
 RenderScene::RenderScene(SceneDescription desc) : desc_(std::move(desc)) {
     device_ = rtcNewDevice(nullptr);
-    if (!device_) throw std::runtime_error("cannot create an Embree device (error " +
-                                           std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    if (!device_)
+        throw std::runtime_error("cannot create an Embree device (error " +
+                                 std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
     rtcSetDeviceErrorFunction(device_, onEmbreeError, nullptr);
 
     auto start = std::chrono::steady_clock::now();

@@ -15,11 +15,11 @@
 namespace stipple::render {
 
 struct SurfaceHit {
-    Vec3 p;                  // world position (reconstructed from the primitive, not o + t d)
-    Vec3 ng;                 // unit geometric normal, the shape's front side (CCW winding / sphere outside)
+    Vec3 p;  // world position (reconstructed from the primitive, not o + t d)
+    Vec3 ng; // unit geometric normal, the shape's front side (CCW winding / sphere outside)
     float t = 0;
     const Material* material = nullptr;
-    int light = -1;          // index into RenderScene::lights(), -1 when the surface does not emit
+    int light = -1; // index into RenderScene::lights(), -1 when the surface does not emit
 };
 
 class RenderScene {
@@ -51,7 +51,7 @@ public:
 private:
     struct GeomRecord {
         enum class Kind { Mesh, Sphere, Instance } kind = Kind::Mesh;
-        int index = 0;       // into the group's meshes / spheres, or into instances_
+        int index = 0; // into the group's meshes / spheres, or into instances_
         int light = -1;
     };
     struct Group {

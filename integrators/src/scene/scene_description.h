@@ -12,8 +12,8 @@
 namespace stipple::render {
 
 struct Emission {
-    Spectrum radiance;      // black: not a light
-    bool twoSided = false;  // one-sided emitters radiate on the side their normal points to
+    Spectrum radiance;     // black: not a light
+    bool twoSided = false; // one-sided emitters radiate on the side their normal points to
     bool isEmitter() const { return !radiance.isBlack(); }
 };
 
@@ -23,8 +23,8 @@ struct MeshShape {
     std::vector<uint32_t> indices; // 3 per triangle
     int material = 0;
     Emission emission;
-    bool isParallelogram = false;  // exactly two triangles (v0 v1 v2) (v0 v2 v3) forming a parallelogram
-    std::string origin;            // "file:line" of its YAML, for messages
+    bool isParallelogram = false; // exactly two triangles (v0 v1 v2) (v0 v2 v3) forming a parallelogram
+    std::string origin;           // "file:line" of its YAML, for messages
 };
 
 struct SphereShape {
@@ -41,7 +41,7 @@ struct ShapeGroup {
 };
 
 struct InstanceShape {
-    int object = 0;          // index into SceneDescription::objects
+    int object = 0; // index into SceneDescription::objects
     Transform objectToWorld;
     std::string origin;
 };
@@ -65,9 +65,9 @@ struct SceneDescription {
     std::vector<std::string> materialNames;
     std::vector<ShapeGroup> objects;
     std::vector<std::string> objectNames;
-    ShapeGroup shapes;                   // the top level
+    ShapeGroup shapes; // the top level
     std::vector<InstanceShape> instances;
-    std::vector<std::string> files;      // the scene file and every file it includes or loads (for the hash)
+    std::vector<std::string> files; // the scene file and every file it includes or loads (for the hash)
 };
 
 } // namespace stipple::render

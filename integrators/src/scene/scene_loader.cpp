@@ -71,8 +71,7 @@ private:
     long long integer(const YAML::Node& n, const std::string& key, long long lo, long long hi) const {
         long long v = 0;
         if (!yaml::StrictYaml::parseInteger(n, v)) fail(n, key, "an integer");
-        if (v < lo || v > hi)
-            fail(n, key, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        if (v < lo || v > hi) fail(n, key, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return v;
     }
     bool boolean(const YAML::Node& n, const std::string& key) const {
@@ -92,7 +91,8 @@ private:
         for (const auto& o : options)
             if (s == o) return s;
         std::string list;
-        for (size_t i = 0; i < options.size(); ++i) list += (i ? (i + 1 == options.size() ? " or " : ", ") : "") + options[i];
+        for (size_t i = 0; i < options.size(); ++i)
+            list += (i ? (i + 1 == options.size() ? " or " : ", ") : "") + options[i];
         fail(n, key, list);
     }
     Vec3 vec3(const YAML::Node& n, const std::string& key) const {
@@ -140,8 +140,8 @@ private:
     YAML::Node loadYaml(const std::string& path, const YAML::Node* from, const std::string& key);
 
     SceneDescription& desc_;
-    std::string file_;                 // the file being parsed (for messages)
-    std::vector<std::string> stack_;   // include chain, to reject cycles
+    std::string file_;               // the file being parsed (for messages)
+    std::vector<std::string> stack_; // include chain, to reject cycles
     std::map<std::string, int> materialIndex_;
     std::map<std::string, int> objectIndex_;
 };
@@ -168,8 +168,11 @@ void Loader::loadMain(const std::string& path) {
     desc_.path = path;
     YAML::Node root = loadYaml(path, nullptr, "");
     stack_.push_back(fs::absolute(path).lexically_normal().string());
-    if (!root.IsMap()) throw SceneError(where(root) + ": expected a map with keys name, render, camera, materials, "
-                                                     "objects, shapes; got " + show(root));
+    if (!root.IsMap())
+        throw SceneError(where(root) +
+                         ": expected a map with keys name, render, camera, materials, "
+                         "objects, shapes; got " +
+                         show(root));
     checkKeys(root, "the scene file", {"name", "render", "camera", "materials", "objects", "shapes"});
     desc_.name = string(require(root, "name", "the scene file"), "name");
     if (root["render"]) parseRender(root["render"]);
@@ -214,10 +217,11 @@ void Loader::parseCamera(const YAML::Node& n) {
             failMsg(n[k], k, bad);
     c.fovDegrees = numberIn(require(n, "fov", "camera"), "fov", 1e-3, 179.0, "in (0, 179] degrees");
     if (lengthSquared(c.lookAt - c.position) == 0) fail(n["look_at"], "look_at", "a point different from position");
-    if (lengthSquared(cross(c.lookAt - c.position, c.up)) == 0) fail(n["up"] ? n["up"] : n, "up", "a direction not parallel to the view direction");
+    if (lengthSquared(cross(c.lookAt - c.position, c.up)) == 0)
+        fail(n["up"] ? n["up"] : n, "up", "a direction not parallel to the view direction");
     if (c.type == "thinlens") {
         c.lensRadius = numberIn(require(n, "lens_radius", "a thinlens camera"), "lens_radius", 0,
-                                 limits::kMaxCoordinate, "in [0, " + fmt(limits::kMaxCoordinate) + "]");
+                                limits::kMaxCoordinate, "in [0, " + fmt(limits::kMaxCoordinate) + "]");
         c.focusDistance =
             numberIn(require(n, "focus_distance", "a thinlens camera"), "focus_distance", 1e-6, 1e30, "> 0");
     } else {
@@ -232,8 +236,8 @@ void Loader::parseMaterials(const YAML::Node& n) {
         std::string name = it->first.Scalar();
         const YAML::Node m = it->second;
         if (!m.IsMap()) fail(m, name, "a material map with a 'type'");
-        std::string type =
-            oneOf(require(m, "type", "material '" + name + "'"), "type", {"diffuse", "plastic", "conductor", "mirror", "dielectric"});
+        std::string type = oneOf(require(m, "type", "material '" + name + "'"), "type",
+                                 {"diffuse", "plastic", "conductor", "mirror", "dielectric"});
         Material mat;
         std::string ctx = "material '" + name + "' (" + type + ")";
         auto roughness = [&] {
@@ -294,8 +298,10 @@ Transform Loader::parseTransform(const YAML::Node& n) const {
     if (!n.IsSequence()) fail(n, "transform", "a list of {translate|rotate|scale|matrix: ...} steps");
     Transform xf;
     for (const YAML::Node& step : n) {
-        if (!step.IsMap() || step.size() != 1) fail(step, "transform", "one of {translate: [x,y,z]}, "
-                                                                       "{rotate: [degrees, [axis]]}, {scale: s|[x,y,z]}, {matrix: [16 numbers]}");
+        if (!step.IsMap() || step.size() != 1)
+            fail(step, "transform",
+                 "one of {translate: [x,y,z]}, "
+                 "{rotate: [degrees, [axis]]}, {scale: s|[x,y,z]}, {matrix: [16 numbers]}");
         std::string op = step.begin()->first.Scalar();
         const YAML::Node v = step.begin()->second;
         Transform t;
@@ -336,8 +342,8 @@ void Loader::include(const YAML::Node& n) {
         if (s == canonical) failMsg(n["file"], "file", "includes itself (cycle through '" + path + "')");
     // Each level recurses through parseShapeList: a chain thousands deep would overflow the stack.
     if (stack_.size() >= size_t(limits::kMaxIncludeDepth))
-        failMsg(n["file"], "file", "includes nested deeper than the limit of " +
-                                       std::to_string(limits::kMaxIncludeDepth) + " files");
+        failMsg(n["file"], "file",
+                "includes nested deeper than the limit of " + std::to_string(limits::kMaxIncludeDepth) + " files");
     YAML::Node fileNode = n["file"];
     YAML::Node root = loadYaml(path, &fileNode, "file");
     std::string saved = file_;
@@ -401,7 +407,8 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
     addMesh(std::move(tm), xf, mit->second, emission, origin, parallelogramCandidate, group);
 }
 
-void Loader::allowShapeKeys(const YAML::Node& n, const std::string& ctx, std::initializer_list<const char*> keys) const {
+void Loader::allowShapeKeys(const YAML::Node& n, const std::string& ctx,
+                            std::initializer_list<const char*> keys) const {
     std::vector<std::string> allowed{"type", "material", "emission", "two_sided", "transform"};
     allowed.insert(allowed.end(), keys.begin(), keys.end());
     checkKeys(n, ctx, allowed);
@@ -435,7 +442,8 @@ TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& t
     } else if (type == "mesh") {
         allowShapeKeys(n, ctx, {"vertices", "indices", "file"});
         if (n["file"]) {
-            if (n["vertices"] || n["indices"]) failMsg(n["file"], "file", "give either file or vertices+indices, not both");
+            if (n["vertices"] || n["indices"])
+                failMsg(n["file"], "file", "give either file or vertices+indices, not both");
             std::string path = resolve(string(n["file"], "file"));
             try {
                 tm = readMeshFile(path);
@@ -524,8 +532,8 @@ SceneDescription loadSceneDescription(const std::string& path) {
         loader.loadMain(path);
     } catch (const YAML::Exception& e) {
         // Any yaml-cpp failure not caught above still names the place.
-        throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                         ": " + e.msg);
+        throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " +
+                         e.msg);
     }
     return desc;
 }

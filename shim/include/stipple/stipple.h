@@ -41,11 +41,11 @@
 #include <stdint.h>
 
 #if defined(_WIN32)
-#  define STIPPLE_API
+#define STIPPLE_API
 #elif defined(__GNUC__)
-#  define STIPPLE_API __attribute__((visibility("default")))
+#define STIPPLE_API __attribute__((visibility("default")))
 #else
-#  define STIPPLE_API
+#define STIPPLE_API
 #endif
 
 #ifdef __cplusplus
@@ -57,23 +57,23 @@ extern "C" {
 
 /* ---- status codes --------------------------------------------------------------------------------- */
 typedef int32_t stipple_status;
-#define STIPPLE_OK                      0
-#define STIPPLE_ERROR_NULL_ARGUMENT     1  /* a required pointer was NULL */
-#define STIPPLE_ERROR_INVALID_ARGUMENT  2  /* a value outside its allowed set (unknown pattern, arity 4, ...) */
-#define STIPPLE_ERROR_OUT_OF_RANGE      3  /* a count or index too large or zero (N, dimension index, buffer) */
-#define STIPPLE_ERROR_STRUCT_SIZE       4  /* struct_size smaller than the first released version */
-#define STIPPLE_ERROR_ABI_VERSION       5  /* the host was built for another ABI major version */
-#define STIPPLE_ERROR_OUT_OF_MEMORY     6
-#define STIPPLE_ERROR_INTERNAL          7  /* a bug: please report the message */
+#define STIPPLE_OK 0
+#define STIPPLE_ERROR_NULL_ARGUMENT 1    /* a required pointer was NULL */
+#define STIPPLE_ERROR_INVALID_ARGUMENT 2 /* a value outside its allowed set (unknown pattern, arity 4, ...) */
+#define STIPPLE_ERROR_OUT_OF_RANGE 3     /* a count or index too large or zero (N, dimension index, buffer) */
+#define STIPPLE_ERROR_STRUCT_SIZE 4      /* struct_size smaller than the first released version */
+#define STIPPLE_ERROR_ABI_VERSION 5      /* the host was built for another ABI major version */
+#define STIPPLE_ERROR_OUT_OF_MEMORY 6
+#define STIPPLE_ERROR_INTERNAL 7 /* a bug: please report the message */
 
 /* ---- patterns --------------------------------------------------------------------------------------- */
-#define STIPPLE_PATTERN_INDEPENDENT   0u  /* counter-based hash, no shared RNG state */
-#define STIPPLE_PATTERN_STRATIFIED    1u  /* jittered strata; any N (see README for non-square N) */
-#define STIPPLE_PATTERN_POISSON       2u  /* high-quality toroidal Poisson disk sets, amortised */
-#define STIPPLE_PATTERN_POISSON_SEED  3u  /* the study's dart throwing (Algorithm 1), generated per set */
-#define STIPPLE_PATTERN_SOBOL         4u  /* Owen-scrambled Sobol' (hash-based, Burley 2020), padded per dimension */
-#define STIPPLE_PATTERN_PMJ02         5u  /* progressive multi-jittered (0,2) sequences; sets <= 65536 points */
-#define STIPPLE_PATTERN_COUNT         6u
+#define STIPPLE_PATTERN_INDEPENDENT 0u  /* counter-based hash, no shared RNG state */
+#define STIPPLE_PATTERN_STRATIFIED 1u   /* jittered strata; any N (see README for non-square N) */
+#define STIPPLE_PATTERN_POISSON 2u      /* high-quality toroidal Poisson disk sets, amortised */
+#define STIPPLE_PATTERN_POISSON_SEED 3u /* the study's dart throwing (Algorithm 1), generated per set */
+#define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, Burley 2020), padded per dimension */
+#define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points */
+#define STIPPLE_PATTERN_COUNT 6u
 
 /* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
 /* Screen-space blue noise: neighbouring pixels' sets are decorrelated so that the per-pixel error is spread
@@ -82,50 +82,50 @@ typedef int32_t stipple_status;
 #define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
 
 /* ---- limits ----------------------------------------------------------------------------------------- */
-#define STIPPLE_MAX_SAMPLES_PER_PIXEL  (1u << 20)  /* N */
-#define STIPPLE_MAX_VALUES_PER_SAMPLE  1024u       /* k of one dimension */
-#define STIPPLE_MAX_SET_SIZE           (1u << 22)  /* k*N of one dimension */
-#define STIPPLE_MAX_DIMENSIONS         4096u
-#define STIPPLE_MAX_NAME_LENGTH        63u
+#define STIPPLE_MAX_SAMPLES_PER_PIXEL (1u << 20) /* N */
+#define STIPPLE_MAX_VALUES_PER_SAMPLE 1024u      /* k of one dimension */
+#define STIPPLE_MAX_SET_SIZE (1u << 22)          /* k*N of one dimension */
+#define STIPPLE_MAX_DIMENSIONS 4096u
+#define STIPPLE_MAX_NAME_LENGTH 63u
 
 typedef struct stipple_sampler_t* stipple_sampler; /* opaque handle */
 
 /* One entry of the host's dimension layout. */
 typedef struct stipple_dimension_desc {
-  uint32_t struct_size; /* sizeof(stipple_dimension_desc) */
-  uint32_t arity;       /* 1, 2 or 3 floats per value */
-  uint32_t count;       /* k >= 1 values per pixel sample; 0 is read as 1 */
-  uint32_t reserved;    /* must be 0 */
-  const char* name;     /* optional (may be NULL), <= STIPPLE_MAX_NAME_LENGTH chars; copied */
+    uint32_t struct_size; /* sizeof(stipple_dimension_desc) */
+    uint32_t arity;       /* 1, 2 or 3 floats per value */
+    uint32_t count;       /* k >= 1 values per pixel sample; 0 is read as 1 */
+    uint32_t reserved;    /* must be 0 */
+    const char* name;     /* optional (may be NULL), <= STIPPLE_MAX_NAME_LENGTH chars; copied */
 } stipple_dimension_desc;
 
 typedef struct stipple_sampler_desc {
-  uint32_t struct_size;       /* sizeof(stipple_sampler_desc) */
-  uint32_t pattern;           /* STIPPLE_PATTERN_* */
-  uint32_t samples_per_pixel; /* N, 1..STIPPLE_MAX_SAMPLES_PER_PIXEL */
-  uint32_t dimension_count;   /* 1..STIPPLE_MAX_DIMENSIONS */
-  uint64_t seed;              /* any value */
-  const stipple_dimension_desc* dimensions; /* dimension_count entries, copied */
-  uint32_t flags;             /* STIPPLE_SAMPLER_FLAG_* bits; unknown bits are rejected */
-  uint32_t reserved;          /* must be 0 */
+    uint32_t struct_size;                     /* sizeof(stipple_sampler_desc) */
+    uint32_t pattern;                         /* STIPPLE_PATTERN_* */
+    uint32_t samples_per_pixel;               /* N, 1..STIPPLE_MAX_SAMPLES_PER_PIXEL */
+    uint32_t dimension_count;                 /* 1..STIPPLE_MAX_DIMENSIONS */
+    uint64_t seed;                            /* any value */
+    const stipple_dimension_desc* dimensions; /* dimension_count entries, copied */
+    uint32_t flags;                           /* STIPPLE_SAMPLER_FLAG_* bits; unknown bits are rejected */
+    uint32_t reserved;                        /* must be 0 */
 } stipple_sampler_desc;
 
 typedef struct stipple_sampler_info {
-  uint32_t struct_size;       /* set by the caller to sizeof(stipple_sampler_info) */
-  uint32_t pattern;
-  uint32_t samples_per_pixel;
-  uint32_t dimension_count;
-  uint64_t seed;
+    uint32_t struct_size; /* set by the caller to sizeof(stipple_sampler_info) */
+    uint32_t pattern;
+    uint32_t samples_per_pixel;
+    uint32_t dimension_count;
+    uint64_t seed;
 } stipple_sampler_info;
 
 typedef struct stipple_dimension_info {
-  uint32_t struct_size;       /* set by the caller to sizeof(stipple_dimension_info) */
-  uint32_t arity;
-  uint32_t count;             /* k */
-  uint32_t floats_per_pixel;  /* N * k * arity: the size fill_pixel writes */
-  const char* name;           /* owned by the sampler, "" when unnamed; valid until release */
-  uint32_t strata[3];         /* stratified: strata per axis for the set of k*N points; others 0 */
-  uint32_t reserved;
+    uint32_t struct_size; /* set by the caller to sizeof(stipple_dimension_info) */
+    uint32_t arity;
+    uint32_t count;            /* k */
+    uint32_t floats_per_pixel; /* N * k * arity: the size fill_pixel writes */
+    const char* name;          /* owned by the sampler, "" when unnamed; valid until release */
+    uint32_t strata[3];        /* stratified: strata per axis for the set of k*N points; others 0 */
+    uint32_t reserved;
 } stipple_dimension_info;
 
 /* ---- functions (also reachable through stipple_api) -------------------------------------------------- */
@@ -146,47 +146,47 @@ STIPPLE_API stipple_status stipple_sampler_release(stipple_sampler sampler);
 
 STIPPLE_API stipple_status stipple_sampler_get_info(stipple_sampler sampler, stipple_sampler_info* out_info);
 STIPPLE_API stipple_status stipple_sampler_get_dimension_info(stipple_sampler sampler, uint32_t dimension,
-                                                             stipple_dimension_info* out_info);
+                                                              stipple_dimension_info* out_info);
 /* Index of the first dimension with this name; STIPPLE_ERROR_INVALID_ARGUMENT if none. */
 STIPPLE_API stipple_status stipple_sampler_find_dimension(stipple_sampler sampler, const char* name,
-                                                         uint32_t* out_dimension);
+                                                          uint32_t* out_dimension);
 
 /* Batch call (the fast path): all N samples of pixel (x, y) for one dimension.
  * Writes N*k*arity floats, sample-major: out[((i * k) + j) * arity + c] for sample i, value j, axis c.
  * out_count is the capacity of out in floats and must be >= N*k*arity. */
 STIPPLE_API stipple_status stipple_sampler_fill_pixel(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
-                                                     uint32_t dimension, float* out, size_t out_count);
+                                                      uint32_t dimension, float* out, size_t out_count);
 
 /* Random access: the k values of one pixel sample for one dimension (k*arity floats), equal bitwise to the
  * corresponding part of stipple_sampler_fill_pixel. */
 STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
-                                                 uint32_t sample_index, uint32_t dimension, float* out,
-                                                 size_t out_count);
+                                                  uint32_t sample_index, uint32_t dimension, float* out,
+                                                  size_t out_count);
 
 /* Past the layout: out_count independent uniform floats in [0,1) for (pixel, sample index, stream). */
 STIPPLE_API stipple_status stipple_sampler_sample_independent(stipple_sampler sampler, uint32_t pixel_x,
-                                                             uint32_t pixel_y, uint32_t sample_index,
-                                                             uint32_t stream, float* out, size_t out_count);
+                                                              uint32_t pixel_y, uint32_t sample_index, uint32_t stream,
+                                                              float* out, size_t out_count);
 
 /* ---- the dlopen entry point --------------------------------------------------------------------------- */
 typedef struct stipple_api {
-  uint32_t struct_size; /* sizeof the table this library provides; grows with minor versions */
-  uint32_t abi_major;
-  uint32_t abi_minor;
-  uint32_t reserved;
-  const char* (*last_error_message)(void);
-  stipple_status (*get_version)(uint32_t*, uint32_t*, uint32_t*);
-  stipple_status (*pattern_from_name)(const char*, uint32_t*);
-  stipple_status (*pattern_name)(uint32_t, const char**);
-  stipple_status (*sampler_create)(const stipple_sampler_desc*, stipple_sampler*);
-  stipple_status (*sampler_release)(stipple_sampler);
-  stipple_status (*sampler_get_info)(stipple_sampler, stipple_sampler_info*);
-  stipple_status (*sampler_get_dimension_info)(stipple_sampler, uint32_t, stipple_dimension_info*);
-  stipple_status (*sampler_find_dimension)(stipple_sampler, const char*, uint32_t*);
-  stipple_status (*sampler_fill_pixel)(stipple_sampler, uint32_t, uint32_t, uint32_t, float*, size_t);
-  stipple_status (*sampler_sample)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
-  stipple_status (*sampler_sample_independent)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*,
-                                               size_t);
+    uint32_t struct_size; /* sizeof the table this library provides; grows with minor versions */
+    uint32_t abi_major;
+    uint32_t abi_minor;
+    uint32_t reserved;
+    const char* (*last_error_message)(void);
+    stipple_status (*get_version)(uint32_t*, uint32_t*, uint32_t*);
+    stipple_status (*pattern_from_name)(const char*, uint32_t*);
+    stipple_status (*pattern_name)(uint32_t, const char**);
+    stipple_status (*sampler_create)(const stipple_sampler_desc*, stipple_sampler*);
+    stipple_status (*sampler_release)(stipple_sampler);
+    stipple_status (*sampler_get_info)(stipple_sampler, stipple_sampler_info*);
+    stipple_status (*sampler_get_dimension_info)(stipple_sampler, uint32_t, stipple_dimension_info*);
+    stipple_status (*sampler_find_dimension)(stipple_sampler, const char*, uint32_t*);
+    stipple_status (*sampler_fill_pixel)(stipple_sampler, uint32_t, uint32_t, uint32_t, float*, size_t);
+    stipple_status (*sampler_sample)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
+    stipple_status (*sampler_sample_independent)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*,
+                                                 size_t);
 } stipple_api;
 
 /* Returns the function table for ABI major version abi_major, or STIPPLE_ERROR_ABI_VERSION (with a

@@ -13,10 +13,10 @@ namespace stipple::pointsets {
 template <int D>
 struct CellGrid {
     int cellsPerAxis = 1;
-    std::vector<uint32_t> cellStart;  // size G^D + 1
-    std::vector<uint32_t> order;      // sorted slot -> input index
-    std::vector<float> sorted;        // D floats per slot, in cell order
-    std::vector<uint32_t> cellOfPoint, fill;  // scratch, kept to avoid reallocating on every rebuild
+    std::vector<uint32_t> cellStart;         // size G^D + 1
+    std::vector<uint32_t> order;             // sorted slot -> input index
+    std::vector<float> sorted;               // D floats per slot, in cell order
+    std::vector<uint32_t> cellOfPoint, fill; // scratch, kept to avoid reallocating on every rebuild
 
     // Robust to any input (relativeRadius takes caller data): NaN and negatives go to cell 0, >= 1 to the last.
     static int cellOf(float x, int g) {
@@ -24,13 +24,13 @@ struct CellGrid {
         if (!(s >= 0.0f)) return 0;
         return s < float(g) ? int(s) : g - 1;
     }
-    uint32_t cellIndex(const int *c) const {
+    uint32_t cellIndex(const int* c) const {
         uint32_t index = 0;
         for (int k = D - 1; k >= 0; --k) index = index * uint32_t(cellsPerAxis) + uint32_t(c[k]);
         return index;
     }
 
-    void build(const float *points, uint32_t n, int g) {
+    void build(const float* points, uint32_t n, int g) {
         cellsPerAxis = g;
         uint32_t cells = 1;
         for (int k = 0; k < D; ++k) cells *= uint32_t(g);
@@ -54,4 +54,4 @@ struct CellGrid {
     }
 };
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

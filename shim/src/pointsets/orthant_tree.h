@@ -14,19 +14,19 @@ namespace stipple::pointsets {
 
 template <int D>
 class OrthantTree {
-  public:
+public:
     using Point = std::array<float, D>;
 
     OrthantTree() { nodes_.push_back(Node{}); }
 
-    void insert(const Point &p) {
+    void insert(const Point& p) {
         uint32_t index = uint32_t(points_.size());
         points_.push_back(p);
         insertInto(0, Point{}, 1.0f, index, 0);
     }
 
     // True if a stored point lies at toroidal distance < r from p (r < 0.5).
-    bool anyWithin(const Point &p, float r) const {
+    bool anyWithin(const Point& p, float r) const {
         // The ball around p may cross the cube's faces: query each periodic image that reaches the cube.
         constexpr int kImages = D == 2 ? 9 : 27;
         for (int image = 0; image < kImages; ++image) {
@@ -42,26 +42,26 @@ class OrthantTree {
         return false;
     }
 
-    const std::vector<Point> &points() const { return points_; }
+    const std::vector<Point>& points() const { return points_; }
 
-  private:
+private:
     static constexpr int kChildren = 1 << D;
     static constexpr int kLeafCapacity = 8;
-    static constexpr int kMaxDepth = 20;  // cells of 2^-20: below any radius dart throwing reaches
+    static constexpr int kMaxDepth = 20; // cells of 2^-20: below any radius dart throwing reaches
 
     struct Node {
-        int32_t firstChild = -1;  // children are kChildren consecutive nodes; -1 for a leaf
-        uint32_t count = 0;       // points in this leaf
-        uint32_t bucket = 0;      // index into buckets_ of this leaf's storage
+        int32_t firstChild = -1; // children are kChildren consecutive nodes; -1 for a leaf
+        uint32_t count = 0;      // points in this leaf
+        uint32_t bucket = 0;     // index into buckets_ of this leaf's storage
         bool hasBucket = false;
     };
 
-    static int childIndex(const Point &p, const Point &lo, float half) {
+    static int childIndex(const Point& p, const Point& lo, float half) {
         int c = 0;
         for (int k = 0; k < D; ++k) c |= (p[k] >= lo[k] + half ? 1 : 0) << k;
         return c;
     }
-    static Point childLo(const Point &lo, float half, int c) {
+    static Point childLo(const Point& lo, float half, int c) {
         Point l = lo;
         for (int k = 0; k < D; ++k)
             if (c >> k & 1) l[k] += half;
@@ -70,7 +70,7 @@ class OrthantTree {
 
     void insertInto(uint32_t node, Point lo, float size, uint32_t index, int depth) {
         for (;;) {
-            Node &n = nodes_[node];
+            Node& n = nodes_[node];
             if (n.firstChild < 0) {
                 if (!n.hasBucket) {
                     n.bucket = uint32_t(buckets_.size());
@@ -94,10 +94,10 @@ class OrthantTree {
         }
     }
 
-    void split(uint32_t node, const Point &lo, float size) {
+    void split(uint32_t node, const Point& lo, float size) {
         int32_t first = int32_t(nodes_.size());
         nodes_.resize(nodes_.size() + kChildren);
-        Node &n = nodes_[node];
+        Node& n = nodes_[node];
         n.firstChild = first;
         std::array<uint32_t, kLeafCapacity> old = buckets_[n.bucket];
         uint32_t count = n.count;
@@ -107,7 +107,7 @@ class OrthantTree {
         n.hasBucket = false;
         float half = size * 0.5f;
         for (uint32_t i = 0; i < count; ++i) {
-            Node &child = nodes_[first + childIndex(points_[old[i]], lo, half)];
+            Node& child = nodes_[first + childIndex(points_[old[i]], lo, half)];
             if (!child.hasBucket) {
                 if (freeBucket != UINT32_MAX) {
                     child.bucket = freeBucket;
@@ -122,7 +122,7 @@ class OrthantTree {
         }
     }
 
-    bool anyWithinNode(uint32_t node, const Point &lo, float size, const Point &q, float r2) const {
+    bool anyWithinNode(uint32_t node, const Point& lo, float size, const Point& q, float r2) const {
         // Squared distance from q to the node's box: skip boxes farther than r.
         float d2 = 0.0f;
         for (int k = 0; k < D; ++k) {
@@ -130,10 +130,10 @@ class OrthantTree {
             d2 += d * d;
         }
         if (d2 >= r2) return false;
-        const Node &n = nodes_[node];
+        const Node& n = nodes_[node];
         if (n.firstChild < 0) {
             for (uint32_t i = 0; i < n.count; ++i) {
-                const Point &s = points_[buckets_[n.bucket][i]];
+                const Point& s = points_[buckets_[n.bucket][i]];
                 float e2 = 0.0f;
                 for (int k = 0; k < D; ++k) e2 += (s[k] - q[k]) * (s[k] - q[k]);
                 if (e2 < r2) return true;
@@ -151,4 +151,4 @@ class OrthantTree {
     std::vector<Point> points_;
 };
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

@@ -37,19 +37,19 @@ struct Pass {
     // share no dependency chain (the sqrt and division of one pair no longer wait for the last), which
     // is most of a pass's time. Each q still sees every earlier push, so the pass stays Gauss-Seidel
     // between runs.
-    inline void relaxRange(float *P, uint32_t i, uint32_t begin, uint32_t end, const float *shift) {
-        float *p = P + size_t(i) * D;
+    inline void relaxRange(float* P, uint32_t i, uint32_t begin, uint32_t end, const float* shift) {
+        float* p = P + size_t(i) * D;
         float base[D], push[D] = {};
         for (int k = 0; k < D; ++k) base[k] = p[k] - shift[k];
         for (uint32_t j = begin; j < end; ++j) {
-            float *q = P + size_t(j) * D;
+            float* q = P + size_t(j) * D;
             float delta[D], d2 = 0.0f;
             for (int k = 0; k < D; ++k) {
                 delta[k] = base[k] - q[k];
                 d2 += delta[k] * delta[k];
             }
             min2 = std::min(min2, d2);
-            if (d2 >= R2 || d2 == 0.0f) continue;  // coincident points: a neighbour's push separates them
+            if (d2 >= R2 || d2 == 0.0f) continue; // coincident points: a neighbour's push separates them
             const float s = halfOmega * (R / std::sqrt(d2) - 1.0f);
             for (int k = 0; k < D; ++k) {
                 push[k] += s * delta[k];
@@ -78,14 +78,14 @@ constexpr auto forwardRows() {
 }
 
 template <int D>
-float gridPass(std::vector<float> &pts, uint32_t n, Pass<D> pass, int g, CellGrid<D> &grid) {
+float gridPass(std::vector<float>& pts, uint32_t n, Pass<D> pass, int g, CellGrid<D>& grid) {
     static constexpr auto rows = forwardRows<D>();
     grid.build(pts.data(), n, g);
-    std::swap(pts, grid.sorted);  // work in cell order; the order of a set carries no meaning
-    float *P = pts.data();
-    const uint32_t *start = grid.cellStart.data();
+    std::swap(pts, grid.sorted); // work in cell order; the order of a set carries no meaning
+    float* P = pts.data();
+    const uint32_t* start = grid.cellStart.data();
     const float noShift[D] = {};
-    int c[D] = {};  // the current cell; c[0] is x
+    int c[D] = {}; // the current cell; c[0] is x
     const uint32_t cells = uint32_t(grid.cellStart.size() - 1);
     for (uint32_t cell = 0; cell < cells; ++cell) {
         const uint32_t begin = start[cell], end = start[cell + 1];
@@ -103,7 +103,7 @@ float gridPass(std::vector<float> &pts, uint32_t n, Pass<D> pass, int g, CellGri
                     pass.relaxRange(P, i, fb, fe, shift);
                 }
             }
-            for (const auto &o : rows) {
+            for (const auto& o : rows) {
                 int nc[D];
                 float shift[D] = {};
                 nc[0] = x;
@@ -112,13 +112,13 @@ float gridPass(std::vector<float> &pts, uint32_t n, Pass<D> pass, int g, CellGri
                     shift[k] = nc[k] < 0 ? -1.0f : (nc[k] >= g ? 1.0f : 0.0f);
                     nc[k] -= int(shift[k]) * g;
                 }
-                const uint32_t mid = grid.cellIndex(nc);  // cell x of the neighbouring row
+                const uint32_t mid = grid.cellIndex(nc); // cell x of the neighbouring row
                 if (x >= 1 && x + 1 < g) {
                     const uint32_t rb = start[mid - 1], re = start[mid + 2];
                     for (uint32_t i = begin; i < end; ++i) pass.relaxRange(P, i, rb, re, shift);
                     continue;
                 }
-                for (int dx = -1; dx <= 1; ++dx) {  // at the seam, cell by cell with its own image
+                for (int dx = -1; dx <= 1; ++dx) { // at the seam, cell by cell with its own image
                     int nx = x + dx;
                     shift[0] = nx < 0 ? -1.0f : (nx >= g ? 1.0f : 0.0f);
                     nx -= int(shift[0]) * g;
@@ -127,14 +127,14 @@ float gridPass(std::vector<float> &pts, uint32_t n, Pass<D> pass, int g, CellGri
                 }
             }
         }
-        for (int k = 0; k < D && ++c[k] == g; ++k) c[k] = 0;  // next cell, first axis fastest
+        for (int k = 0; k < D && ++c[k] == g; ++k) c[k] = 0; // next cell, first axis fastest
     }
     return pass.min2;
 }
 
 template <int D>
-float allPairsPass(std::vector<float> &pts, uint32_t n, Pass<D> pass) {
-    float *P = pts.data();
+float allPairsPass(std::vector<float>& pts, uint32_t n, Pass<D> pass) {
+    float* P = pts.data();
     for (uint32_t i = 0; i < n; ++i)
         for (uint32_t j = i + 1; j < n; ++j) {
             float shift[D];
@@ -147,23 +147,23 @@ float allPairsPass(std::vector<float> &pts, uint32_t n, Pass<D> pass) {
     return pass.min2;
 }
 
-}  // namespace
+} // namespace
 
 template <int D>
-RelaxStats relaxOverlaps(std::vector<float> &pts, uint32_t n, const RelaxParams &params) {
+RelaxStats relaxOverlaps(std::vector<float>& pts, uint32_t n, const RelaxParams& params) {
     RelaxStats stats;
     if (n < 2) {
         stats.verified = true;
         return stats;
     }
     const Pass<D> pass{params.diameter, params.diameter * params.diameter, 0.5f * params.omega};
-    const Pass<D> measure{0.0f, 0.0f, 0.0f};  // pushes nothing: the exact minimum pair distance
+    const Pass<D> measure{0.0f, 0.0f, 0.0f}; // pushes nothing: the exact minimum pair distance
     const float target2 = params.target * params.target, accept2 = params.accept * params.accept;
     const int g = int(std::floor(1.0 / double(params.diameter)));
     CellGrid<D> grid;
-    auto run = [&](const Pass<D> &p) {
+    auto run = [&](const Pass<D>& p) {
         float min2 = g >= 3 ? gridPass<D>(pts, n, p, g, grid) : allPairsPass<D>(pts, n, p);
-        for (float &x : pts) x = wrapUnit(x);
+        for (float& x : pts) x = wrapUnit(x);
         return min2;
     };
     while (stats.passes < params.maxPasses) {
@@ -179,11 +179,11 @@ RelaxStats relaxOverlaps(std::vector<float> &pts, uint32_t n, const RelaxParams 
             return stats;
         }
     }
-    stats.minDistance = std::sqrt(run(measure));  // not verified: still report the exact minimum
+    stats.minDistance = std::sqrt(run(measure)); // not verified: still report the exact minimum
     return stats;
 }
 
-template RelaxStats relaxOverlaps<2>(std::vector<float> &, uint32_t, const RelaxParams &);
-template RelaxStats relaxOverlaps<3>(std::vector<float> &, uint32_t, const RelaxParams &);
+template RelaxStats relaxOverlaps<2>(std::vector<float>&, uint32_t, const RelaxParams&);
+template RelaxStats relaxOverlaps<3>(std::vector<float>&, uint32_t, const RelaxParams&);
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

@@ -12,21 +12,21 @@
 namespace stipple::pointsets {
 
 struct RelaxParams {
-    float diameter;  // R, absolute
-    float target;    // stop once a pass meets no pair closer than this (target <= R) ...
-    float accept;    // ... and an exact measurement confirms no pair is closer than this (<= target)
-    float omega;     // over-relaxation of each push, in [1, 2)
+    float diameter; // R, absolute
+    float target;   // stop once a pass meets no pair closer than this (target <= R) ...
+    float accept;   // ... and an exact measurement confirms no pair is closer than this (<= target)
+    float omega;    // over-relaxation of each push, in [1, 2)
     int maxPasses;
 };
 
 struct RelaxStats {
     int passes = 0;
-    float minDistance = 0;  // the last measurement (exact when verified)
-    bool verified = false;  // accept reached within maxPasses
+    float minDistance = 0; // the last measurement (exact when verified)
+    bool verified = false; // accept reached within maxPasses
 };
 
 // pts: n points, D interleaved floats each, in [0,1); returned in [0,1) (order is changed).
 template <int D>
-RelaxStats relaxOverlaps(std::vector<float> &pts, uint32_t n, const RelaxParams &params);
+RelaxStats relaxOverlaps(std::vector<float>& pts, uint32_t n, const RelaxParams& params);
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

@@ -36,4 +36,4 @@ double meanNearestNeighbourRadius(int dim, const float* points, uint32_t n);
 // d_max of n points in dim dimensions (see relativeRadius).
 double maxPackingDistance(int dim, uint32_t n);
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

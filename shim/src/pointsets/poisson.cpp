@@ -33,7 +33,7 @@ struct Tuning {
     double diameter, target, accept;
     float omega;
     int maxPasses;
-    double perCell;  // points per coarse stratum of the start
+    double perCell; // points per coarse stratum of the start
 };
 Tuning tuningFor(int dim) {
     if (dim == 2) return {0.89, 0.86, 0.855, 1.6f, 100, 4.0};
@@ -45,7 +45,7 @@ inline int maxAttempts(uint32_t n) { return n < 16 ? 32 : 4; }
 
 // Fisher-Yates: the relaxation leaves points in cell order; hosts get no spatial order to trip on.
 template <int D>
-void shuffle(std::vector<float> &pts, uint32_t n, uint64_t seed) {
+void shuffle(std::vector<float>& pts, uint32_t n, uint64_t seed) {
     SplitMix64 rng(seed);
     for (uint32_t i = n; i > 1; --i) {
         uint32_t j = rng.uniformBelow(i);
@@ -59,7 +59,7 @@ void shuffle(std::vector<float> &pts, uint32_t n, uint64_t seed) {
 // are free, so no lattice is imprinted. (One point per stratum, i.e. jittering, imprints its grid: the
 // relaxed sets then show Bragg peaks at the stratum frequency; see POINTSETS.md.)
 template <int D>
-void stratifiedStart(std::vector<float> &pts, uint32_t n, double perCell, SplitMix64 &rng) {
+void stratifiedStart(std::vector<float>& pts, uint32_t n, double perCell, SplitMix64& rng) {
     const uint32_t g = std::max(1u, uint32_t(std::lround(std::pow(double(n) / perCell, 1.0 / D))));
     uint32_t cells = 1;
     for (int k = 0; k < D; ++k) cells *= g;
@@ -75,7 +75,7 @@ void stratifiedStart(std::vector<float> &pts, uint32_t n, double perCell, SplitM
 }
 
 template <int D>
-std::vector<float> relaxedSet(uint32_t n, uint64_t seed, const Tuning &tuning) {
+std::vector<float> relaxedSet(uint32_t n, uint64_t seed, const Tuning& tuning) {
     const double dmax = packingDistance(D, n);
     std::vector<float> best;
     float bestDistance = -1.0f;
@@ -112,7 +112,7 @@ std::vector<float> shiftedLattice1D(uint32_t n, uint64_t seed) {
     return pts;
 }
 
-}  // namespace
+} // namespace
 
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed) {
     if (n == 0 || n > kMaxPoints || dim < 1 || dim > 3) return {};
@@ -122,4 +122,4 @@ std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed) {
     return dim == 2 ? relaxedSet<2>(n, stream, tuning) : relaxedSet<3>(n, stream, tuning);
 }
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

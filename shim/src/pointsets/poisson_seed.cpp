@@ -27,9 +27,9 @@ namespace {
 constexpr int kTryLimit = 100;
 constexpr float kShrink = 0.75f;
 
-std::vector<float> dartThrowing1D(uint32_t n, SplitMix64 &rng) {
+std::vector<float> dartThrowing1D(uint32_t n, SplitMix64& rng) {
     std::set<float> accepted;
-    std::vector<float> order;  // insertion order, as in 2D/3D (the set itself is sorted)
+    std::vector<float> order; // insertion order, as in 2D/3D (the set itself is sorted)
     order.reserve(n);
     float r = 1.0f / float(n);
     int failures = 0;
@@ -57,7 +57,7 @@ std::vector<float> dartThrowing1D(uint32_t n, SplitMix64 &rng) {
 }
 
 template <int D>
-std::vector<float> dartThrowingTree(uint32_t n, SplitMix64 &rng) {
+std::vector<float> dartThrowingTree(uint32_t n, SplitMix64& rng) {
     OrthantTree<D> tree;
     float r = float(std::pow(double(n), -1.0 / D));
     int failures = 0;
@@ -74,20 +74,20 @@ std::vector<float> dartThrowingTree(uint32_t n, SplitMix64 &rng) {
     }
     std::vector<float> out;
     out.reserve(size_t(n) * D);
-    for (const auto &p : tree.points()) out.insert(out.end(), p.begin(), p.end());
+    for (const auto& p : tree.points()) out.insert(out.end(), p.begin(), p.end());
     return out;
 }
 
-}  // namespace
+} // namespace
 
 std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed) {
     if (n == 0 || n > kMaxPoints || dim < 1 || dim > 3) return {};
     SplitMix64 rng(deriveSeed(seed, 0x5eed0000u + uint64_t(dim)));
     switch (dim) {
-        case 1: return dartThrowing1D(n, rng);
-        case 2: return dartThrowingTree<2>(n, rng);
-        default: return dartThrowingTree<3>(n, rng);
+    case 1: return dartThrowing1D(n, rng);
+    case 2: return dartThrowingTree<2>(n, rng);
+    default: return dartThrowingTree<3>(n, rng);
     }
 }
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

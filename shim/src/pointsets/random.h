@@ -15,7 +15,7 @@ inline uint64_t mix64(uint64_t z) {
 }
 
 class SplitMix64 {
-  public:
+public:
     explicit SplitMix64(uint64_t seed) : state_(mix64(seed)) {}
 
     uint64_t next() {
@@ -27,11 +27,9 @@ class SplitMix64 {
     // Uniform in [0,1) with 53 bits.
     double uniformDouble() { return double(next() >> 11) * 0x1p-53; }
     // Uniform integer in [0, bound), bound > 0 (Lemire's multiply-shift; bias < 2^-32 for our bounds).
-    uint32_t uniformBelow(uint32_t bound) {
-        return uint32_t(((next() >> 32) * uint64_t(bound)) >> 32);
-    }
+    uint32_t uniformBelow(uint32_t bound) { return uint32_t(((next() >> 32) * uint64_t(bound)) >> 32); }
 
-  private:
+private:
     uint64_t state_;
 };
 
@@ -40,4 +38,4 @@ inline uint64_t deriveSeed(uint64_t seed, uint64_t stream) {
     return mix64(seed ^ mix64(stream + 0x632be59bd9b4e019ull));
 }
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

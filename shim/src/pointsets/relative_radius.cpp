@@ -16,8 +16,8 @@ namespace stipple::pointsets {
 namespace {
 
 template <int D>
-std::vector<double> nearestNeighbourDistances(const float *points, uint32_t n) {
-    std::vector<double> nearest(n, 1.0);  // n = 1: the point's own periodic image at distance 1
+std::vector<double> nearestNeighbourDistances(const float* points, uint32_t n) {
+    std::vector<double> nearest(n, 1.0); // n = 1: the point's own periodic image at distance 1
     if (n < 2) return nearest;
     int g = std::max(1, int(std::floor(std::pow(double(n), 1.0 / D))));
     g = std::min(g, D == 1 ? (1 << 22) : D == 2 ? 2048 : 160);
@@ -25,7 +25,7 @@ std::vector<double> nearestNeighbourDistances(const float *points, uint32_t n) {
     grid.build(points, n, g);
     const double cell = 1.0 / g;
     for (uint32_t slot = 0; slot < n; ++slot) {
-        const float *p = &grid.sorted[size_t(slot) * D];
+        const float* p = &grid.sorted[size_t(slot) * D];
         int home[D];
         for (int k = 0; k < D; ++k) home[k] = CellGrid<D>::cellOf(p[k], g);
         double best2 = std::numeric_limits<double>::infinity();
@@ -45,7 +45,7 @@ std::vector<double> nearestNeighbourDistances(const float *points, uint32_t n) {
                 uint32_t cellIndex = grid.cellIndex(c);
                 for (uint32_t other = grid.cellStart[cellIndex]; other < grid.cellStart[cellIndex + 1]; ++other) {
                     if (other == slot) continue;
-                    const float *q = &grid.sorted[size_t(other) * D];
+                    const float* q = &grid.sorted[size_t(other) * D];
                     double d2 = 0.0;
                     for (int k = 0; k < D; ++k) {
                         double d = torusDelta(p[k], q[k]);
@@ -54,7 +54,7 @@ std::vector<double> nearestNeighbourDistances(const float *points, uint32_t n) {
                     best2 = std::min(best2, d2);
                 }
             }
-            if (span >= g) break;  // every cell visited
+            if (span >= g) break; // every cell visited
             double reach = ring * cell;
             if (best2 <= reach * reach) break;
         }
@@ -63,25 +63,25 @@ std::vector<double> nearestNeighbourDistances(const float *points, uint32_t n) {
     return nearest;
 }
 
-std::vector<double> nearestNeighbourDistances(int dim, const float *points, uint32_t n) {
+std::vector<double> nearestNeighbourDistances(int dim, const float* points, uint32_t n) {
     switch (dim) {
-        case 1: return nearestNeighbourDistances<1>(points, n);
-        case 2: return nearestNeighbourDistances<2>(points, n);
-        default: return nearestNeighbourDistances<3>(points, n);
+    case 1: return nearestNeighbourDistances<1>(points, n);
+    case 2: return nearestNeighbourDistances<2>(points, n);
+    default: return nearestNeighbourDistances<3>(points, n);
     }
 }
 
-}  // namespace
+} // namespace
 
 double maxPackingDistance(int dim, uint32_t n) { return packingDistance(dim, n); }
 
-double relativeRadius(int dim, const float *points, uint32_t n) {
+double relativeRadius(int dim, const float* points, uint32_t n) {
     if (n == 0 || n > kMaxPoints || points == nullptr || dim < 1 || dim > 3) return 0.0;
     std::vector<double> nearest = nearestNeighbourDistances(dim, points, n);
     return *std::min_element(nearest.begin(), nearest.end()) / packingDistance(dim, n);
 }
 
-double meanNearestNeighbourRadius(int dim, const float *points, uint32_t n) {
+double meanNearestNeighbourRadius(int dim, const float* points, uint32_t n) {
     if (n == 0 || n > kMaxPoints || points == nullptr || dim < 1 || dim > 3) return 0.0;
     std::vector<double> nearest = nearestNeighbourDistances(dim, points, n);
     double sum = 0.0;
@@ -89,4 +89,4 @@ double meanNearestNeighbourRadius(int dim, const float *points, uint32_t n) {
     return sum / double(n) / packingDistance(dim, n);
 }
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

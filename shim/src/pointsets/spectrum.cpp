@@ -10,7 +10,7 @@ namespace stipple::pointsets {
 PowerSpectrum2D::PowerSpectrum2D(int maxFrequency)
     : K_(std::max(1, maxFrequency)), W_(2 * K_ + 1), sum_(size_t(W_) * W_, 0.0) {}
 
-void PowerSpectrum2D::add(const float *points, uint32_t n) {
+void PowerSpectrum2D::add(const float* points, uint32_t n) {
     if (n == 0 || points == nullptr) return;
     using C = std::complex<double>;
     const double twoPi = 6.283185307179586;
@@ -62,4 +62,4 @@ std::vector<PowerSpectrum2D::Ring> PowerSpectrum2D::rings() const {
     return out;
 }
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

@@ -13,11 +13,11 @@
 namespace stipple::pointsets {
 
 class PowerSpectrum2D {
-  public:
+public:
     explicit PowerSpectrum2D(int maxFrequency);
 
     // Adds one set's periodogram (n points, interleaved x,y).
-    void add(const float *points, uint32_t n);
+    void add(const float* points, uint32_t n);
 
     int maxFrequency() const { return K_; }
     int sets() const { return sets_; }
@@ -25,18 +25,18 @@ class PowerSpectrum2D {
     double at(int kx, int ky) const;
 
     struct Ring {
-        double radius;      // mean |k| of the ring (integer frequencies)
-        double mean;        // radially averaged power
-        double anisotropy;  // 10 log10(variance / mean^2) over the ring, in dB
+        double radius;     // mean |k| of the ring (integer frequencies)
+        double mean;       // radially averaged power
+        double anisotropy; // 10 log10(variance / mean^2) over the ring, in dB
         int count;
     };
     // Rings of unit width centred on integer radii 1..K.
     std::vector<Ring> rings() const;
 
-  private:
+private:
     int K_, W_;
     int sets_ = 0;
-    std::vector<double> sum_;  // (2K+1)^2, row ky, column kx
+    std::vector<double> sum_; // (2K+1)^2, row ky, column kx
 };
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

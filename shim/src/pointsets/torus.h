@@ -31,10 +31,10 @@ inline float torusDelta(float a, float b) {
 inline double packingDistance(int dim, uint32_t n) {
     double N = double(n);
     switch (dim) {
-        case 1: return 1.0 / N;
-        case 2: return std::sqrt(2.0 / (std::sqrt(3.0) * N));
-        default: return std::cbrt(std::sqrt(2.0) / N);
+    case 1: return 1.0 / N;
+    case 2: return std::sqrt(2.0 / (std::sqrt(3.0) * N));
+    default: return std::cbrt(std::sqrt(2.0) / N);
     }
 }
 
-}  // namespace stipple::pointsets
+} // namespace stipple::pointsets

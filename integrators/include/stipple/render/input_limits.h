@@ -18,12 +18,12 @@
 namespace stipple::render {
 
 namespace limits {
-inline constexpr uint64_t kMaxYamlFileBytes = 16ull << 20;  // a scene, matrix or results file
-inline constexpr uint64_t kMaxMeshFileBytes = 1ull << 30;   // a PLY / OBJ mesh file
-inline constexpr int kMaxIncludeDepth = 32;                 // nested `type: include` files
-inline constexpr double kMaxCoordinate = 1e12;              // |x| of any point the ray tracer sees (floats)
+inline constexpr uint64_t kMaxYamlFileBytes = 16ull << 20; // a scene, matrix or results file
+inline constexpr uint64_t kMaxMeshFileBytes = 1ull << 30;  // a PLY / OBJ mesh file
+inline constexpr int kMaxIncludeDepth = 32;                // nested `type: include` files
+inline constexpr double kMaxCoordinate = 1e12;             // |x| of any point the ray tracer sees (floats)
 inline constexpr uint64_t kMaxTrianglesPerShape = 1ull << 26;
-inline constexpr uint64_t kMaxPixels = 1ull << 25;          // width × height of one render (33.5 M)
+inline constexpr uint64_t kMaxPixels = 1ull << 25;           // width × height of one render (33.5 M)
 inline constexpr uint64_t kMaxSamplesPerRender = 1ull << 36; // width × height × spp of one render
 } // namespace limits
 
@@ -43,7 +43,7 @@ inline std::string readFileBounded(const std::string& path, uint64_t limit, cons
         int fd;
         ~FdCloser() { ::close(fd); }
     } closer{fd};
-    struct stat st{};
+    struct stat st {};
     if (::fstat(fd, &st) != 0) throw InputLimitError(path + ": cannot stat " + what + ": " + std::strerror(errno));
     if (!S_ISREG(st.st_mode)) throw InputLimitError(path + ": " + what + " is not a regular file");
     if (uint64_t(st.st_size) > limit)

@@ -51,24 +51,24 @@ struct RenderOptions {
     uint64_t seed = 1;
     int width = 0;
     int height = 0;
-    std::string integrator;             // path | direct | bdpt; empty: the scene's
-    int maxDepth = -1;                  // -1: the scene's
-    int threads = 0;                    // 0: all hardware threads
-    bool progress = false;              // progress bar on stderr when it is a TTY
-    std::string shim;                   // path of libstipple.so.1; empty: $STIPPLE_SHIM, then beside the executable
+    std::string integrator; // path | direct | bdpt; empty: the scene's
+    int maxDepth = -1;      // -1: the scene's
+    int threads = 0;        // 0: all hardware threads
+    bool progress = false;  // progress bar on stderr when it is a TTY
+    std::string shim;       // path of libstipple.so.1; empty: $STIPPLE_SHIM, then beside the executable
 };
 
 struct RenderResult {
-    Image image;                  // per-pixel mean radiance
-    Image variance;               // per-pixel, per-channel variance of the mean (sample variance / spp)
-    double renderSeconds = 0;     // wall seconds of the render loop (no scene load, no BVH build)
-    double samplerSeconds = 0;    // seconds spent inside the shim, summed over threads / thread count
-    double cpuSeconds = 0;        // CPU seconds of the render loop, summed over its worker threads: unlike the
-                                  // wall time, it does not grow when other processes take the cores
+    Image image;               // per-pixel mean radiance
+    Image variance;            // per-pixel, per-channel variance of the mean (sample variance / spp)
+    double renderSeconds = 0;  // wall seconds of the render loop (no scene load, no BVH build)
+    double samplerSeconds = 0; // seconds spent inside the shim, summed over threads / thread count
+    double cpuSeconds = 0;     // CPU seconds of the render loop, summed over its worker threads: unlike the
+                               // wall time, it does not grow when other processes take the cores
     uint64_t nonFiniteSamples = 0;
     uint64_t raysTraced = 0;
-    std::string layout;           // the dimension layout declared to the shim, one line per dimension
-    RenderOptions settings;       // what was rendered: the options with every scene default resolved
+    std::string layout;     // the dimension layout declared to the shim, one line per dimension
+    RenderOptions settings; // what was rendered: the options with every scene default resolved
 };
 
 class Scene {

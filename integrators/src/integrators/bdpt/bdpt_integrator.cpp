@@ -142,9 +142,8 @@ private:
         const PathVertex& z = cam[size_t(t - 1)];
         if (z.delta || connectPos_[size_t(t)] < 0) return {};
         float pmf = 1;
-        size_t li = scene_.lights().size() == 1
-                        ? 0
-                        : scene_.lightChoice().sample(sv.get1D(connectChoice_[size_t(t)]), &pmf);
+        size_t li =
+            scene_.lights().size() == 1 ? 0 : scene_.lightChoice().sample(sv.get1D(connectChoice_[size_t(t)]), &pmf);
         LightLiSample ls;
         if (!scene_.lights()[li].sampleLi(z.p, sv.get2D(connectPos_[size_t(t)]), ls)) return {};
         PathVertex y;
@@ -189,8 +188,7 @@ private:
         z.p = cs.pLens;
         z.n = z.ns = cs.nLens;
         const PathVertex* prev = s >= 2 ? &light[size_t(s - 2)] : nullptr;
-        Spectrum c = y.beta * eval_.f(prev, y, z, TransportMode::Importance) * cs.We *
-                     (absDot(y.ns, cs.wi) / cs.pdf);
+        Spectrum c = y.beta * eval_.f(prev, y, z, TransportMode::Importance) * cs.We * (absDot(y.ns, cs.wi) / cs.pdf);
         if (c.isBlack()) return;
         ++tile.rays;
         if (scene_.occludedBetween(y.p, y.n, cs.pLens)) return;

@@ -46,8 +46,7 @@ void SubpathGenerator::walk(Ray ray, Spectrum beta, float pdfDir, TransportMode 
         Frame frame(v.ns);
         Vec3 woW = -ray.d, wo = frame.toLocal(woW);
         BsdfSample bs;
-        if (!v.material->sample(wo, sv.get1D(dims[size_t(b)].lobe), sv.get2D(dims[size_t(b)].dir), bs, mode))
-            return;
+        if (!v.material->sample(wo, sv.get1D(dims[size_t(b)].lobe), sv.get2D(dims[size_t(b)].dir), bs, mode)) return;
         Vec3 wiW = frame.toWorld(bs.wi);
         beta *= bs.f * (std::abs(bs.wi.z) / bs.pdf);
         if (mode == TransportMode::Importance) beta *= shadingNormalCorrection(v.ns, v.n, woW, wiW);

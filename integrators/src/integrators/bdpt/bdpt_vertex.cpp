@@ -30,8 +30,7 @@ float PathEvaluator::pdf(const PathVertex* prev, const PathVertex& cur, const Pa
         camera_.pdfWe(Ray{cur.p, direction(cur, next)}, pdfPos, pdfDir);
         return toArea(pdfDir, cur, next);
     }
-    case VertexKind::Light:
-        return pdfLightEmission(cur, next);
+    case VertexKind::Light: return pdfLightEmission(cur, next);
     case VertexKind::Surface: {
         if (!prev) return 0;
         Frame frame(cur.ns);
@@ -64,8 +63,7 @@ float PathEvaluator::pdfLightConnect(const PathVertex& v, const PathVertex& ref)
 Spectrum PathEvaluator::f(const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                           TransportMode mode) const {
     switch (cur.kind) {
-    case VertexKind::Light:
-        return Le(cur, next);
+    case VertexKind::Light: return Le(cur, next);
     case VertexKind::Surface: {
         if (!prev) return {};
         Vec3 woW = direction(cur, *prev), wiW = direction(cur, next);
@@ -74,8 +72,7 @@ Spectrum PathEvaluator::f(const PathVertex* prev, const PathVertex& cur, const P
         if (mode == TransportMode::Importance) v *= shadingNormalCorrection(cur.ns, cur.n, woW, wiW);
         return v;
     }
-    case VertexKind::Camera:
-        return {};
+    case VertexKind::Camera: return {};
     }
     return {};
 }
