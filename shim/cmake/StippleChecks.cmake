@@ -49,3 +49,20 @@ if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
     set_tests_properties(shim.quarter_disk_py PROPERTIES LABELS "statistical")
   endif()
 endif()
+
+# 1.0 compatibility: abidiff against the 1.0 baseline (kept in abi/1.0/) reports additions only, and the C example
+# host built against the 1.0 header (abi/1.0/stipple/stipple.h, the released header unmodified) runs against this
+# library through dlopen.
+if(STIPPLE_ABIDIFF)
+  add_test(NAME shim.abi_since_1_0 COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-abi.sh $<TARGET_FILE:stipple>
+                                           shim/abi/1.0/libstipple.abi)
+  set_tests_properties(shim.abi_since_1_0 PROPERTIES LABELS unit)
+endif()
+add_executable(quarter_disk_abi_1_0 examples/quarter_disk.c)
+set_target_properties(quarter_disk_abi_1_0 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+target_compile_options(quarter_disk_abi_1_0 PRIVATE -pedantic -Wall -Wextra -Werror)
+target_include_directories(quarter_disk_abi_1_0 PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/abi/1.0)
+target_link_libraries(quarter_disk_abi_1_0 PRIVATE ${CMAKE_DL_LIBS} m)
+add_dependencies(quarter_disk_abi_1_0 stipple)
+add_test(NAME shim.host_abi_1_0 COMMAND quarter_disk_abi_1_0 $<TARGET_FILE:stipple>)
+set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")

@@ -4,9 +4,10 @@
 
 namespace stipple {
 
-void fillIndependent(uint64_t key, const Dimension& dim, float* out) {
-  const uint64_t n = uint64_t(dim.setSize) * dim.arity;
-  for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, i));
+void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+  const uint64_t begin = uint64_t(first) * dim.arity;
+  const uint64_t n = uint64_t(count) * dim.arity;
+  for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, begin + i));
 }
 
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out) {

@@ -1,15 +1,22 @@
 // pattern_poisson.cpp — serving Poisson-disk sets: "poisson" from the cache, "poisson-seed" generated fresh.
 //
-// A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections),
-// a Cranley-Patterson shift and a permutation of sample order, all hashed from the set key. These maps are
-// isometries of the torus, so they keep the set's minimum distance (rho); the shift makes every sample uniformly
-// distributed over [0,1)^arity whatever the stored set is.
+// A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections) and
+// a Cranley-Patterson shift, hashed from the set key. These maps are isometries of the torus, so they keep the
+// set's minimum distance (rho); the shift makes every sample uniformly distributed over [0,1)^arity whatever the
+// stored set is.
+// Order: "poisson" serves the stored order (made progressive by the cache, progressive_order.h) shuffled only
+// within each layer [2^j, 2^(j+1)) by a hashed permutation (Kensler 2013). Every prefix of 2^j points is thus
+// exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
+// dimensions that drew the same stored set and symmetry from pairing their samples point for point.
+// "poisson-seed" serves its fresh set in a hashed random order.
 #include "error.h"
 #include "hash.h"
 #include "patterns.h"
 #include "permutation.h"
 #include "pointsets/pointsets.h"
 
+#include <algorithm>
+#include <bit>
 #include <string>
 #include <vector>
 
@@ -25,10 +32,13 @@ struct TorusMap {
   bool reflect[3] = {false, false, false};
   float shift[3];
 
-  TorusMap(uint64_t key, uint32_t arity, bool useSymmetry) : orderSeed(static_cast<uint32_t>(hashAt(key, 1) >> 32)) {
-    for (uint32_t c = 0; c < 3; ++c) shift[c] = unitFloat(hashAt(key, 3 + c));
-    if (!useSymmetry) return;
+  // One hash gives the three shifts (21 bits each: multiples of 2^-21), one the symmetry, one the order.
+  TorusMap(uint64_t key, uint32_t arity, bool useSymmetry) {
+    const uint64_t shifts = hashAt(key, 3);
+    for (uint32_t c = 0; c < 3; ++c) shift[c] = float((shifts >> (43 - 21 * c)) & 0x1fffffu) * 0x1p-21f;
     const uint64_t symmetry = hashAt(key, 2);
+    orderSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
+    if (!useSymmetry) return;
     const uint32_t axisOrder = arity == 3 ? uint32_t(symmetry % 6) : arity == 2 ? uint32_t(symmetry % 2) * 2 : 0;
     for (uint32_t c = 0; c < 3; ++c) {
       source[c] = kAxisOrders[axisOrder][c];
@@ -50,11 +60,13 @@ struct TorusMap {
   }
 };
 
-void serve(const TorusMap& map, const Dimension& dim, const float* stored, float* out) {
-  for (uint32_t p = 0; p < dim.setSize; ++p) {
-    const uint32_t q = permuteIndex(p, dim.setSize, map.orderSeed);
-    map.apply(stored + size_t(q) * dim.arity, dim.arity, out + size_t(p) * dim.arity);
-  }
+
+// Position p of the served order -> stored point: p's layer [2^j, 2^(j+1)) (clipped to M) is shuffled.
+inline uint32_t layeredIndex(uint32_t p, uint32_t points, uint32_t seed) {
+  if (p < 2) return p;
+  const uint32_t base = std::bit_floor(p);
+  const uint32_t size = std::min(base, points - base);
+  return base + permuteIndex(p - base, size, seed ^ base);
 }
 
 const float* cachedSet(uint64_t key, const Dimension& dim) {
@@ -73,19 +85,31 @@ std::vector<float> freshSeedSet(uint64_t key, const Dimension& dim) {
 
 }  // namespace
 
-void fillPoisson(uint64_t key, const Dimension& dim, float* out) {
-  serve(TorusMap(key, dim.arity, true), dim, cachedSet(key, dim), out);
+void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+  const TorusMap map(key, dim.arity, true);
+  const float* stored = cachedSet(key, dim);
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t q = layeredIndex(first + i, dim.setSize, map.orderSeed);
+    map.apply(stored + size_t(q) * dim.arity, dim.arity, out + size_t(i) * dim.arity);
+  }
 }
 
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
   const TorusMap map(key, dim.arity, true);
-  const uint32_t q = permuteIndex(p, dim.setSize, map.orderSeed);
-  map.apply(cachedSet(key, dim) + size_t(q) * dim.arity, dim.arity, out);
+  map.apply(cachedSet(key, dim) + size_t(layeredIndex(p, dim.setSize, map.orderSeed)) * dim.arity, dim.arity, out);
 }
 
-void fillPoissonSeed(uint64_t key, const Dimension& dim, float* out) {
+void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
   const std::vector<float> set = freshSeedSet(key, dim);
-  serve(TorusMap(key, dim.arity, false), dim, set.data(), out);
+  const TorusMap map(key, dim.arity, false);
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t q = permuteIndex(first + i, dim.setSize, map.orderSeed);
+    map.apply(set.data() + size_t(q) * dim.arity, dim.arity, out + size_t(i) * dim.arity);
+  }
+}
+
+void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
+  fillPoissonSeed(key, dim, p, 1, out);
 }
 
 }  // namespace stipple

@@ -1,7 +1,18 @@
 // pattern_stratified.cpp — jittered strata: one sample per used cell of the dimension's StrataGrid.
 //
-// Per (pixel, dimension) the key gives: the permutation of sample order (so sample i of this dimension is not
-// tied to sample i of another), the choice of padded lines and hole offset, and the jitter of every point.
+// Order of the set's points (what a prefix of the set is worth):
+//  - progressive grids (exact, every axis a power of two; M = 2^m): point p sits in the cell whose coordinates,
+//    read as bits interleaved axis by axis (x, y, z, x, ...) from each axis' most significant bit, spell the
+//    bit-reversal of q = LK(p) mod M, where LK is a hashed Laine-Karras permutation (Burley 2020: bit k of q
+//    depends on bits 0..k of p only, bijectively). p < 2^j therefore gives every value of q's low j bits: every
+//    prefix of 2^j points holds one point in each cell of the coarse 2^j-cell grid made of the first j
+//    interleaved bits (progressive jittered sampling), and so does every aligned block of 2^j points. LK is
+//    seeded per (pixel, dimension, block): an Owen-style scramble of the cell tree, which makes every sample
+//    uniform and sample i of one dimension independent of sample i of another.
+//  - other grids (non-power-of-two axes, padded grids): a hashed random permutation of the points (Kensler 2013):
+//    a prefix is a uniformly random subset of the strata.
+// Per (pixel, dimension, block) the key gives the order (rotation or permutation), the padded lines and hole
+// offset, and the jitter of every point.
 #include "hash.h"
 #include "patterns.h"
 #include "permutation.h"
@@ -13,15 +24,84 @@ namespace stipple {
 namespace {
 
 struct StratifiedSet {
-  uint32_t orderSeed, lineSeed, holeOffset;
+  uint32_t orderSeed;  // Laine-Karras seed (progressive) or permutation seed
   uint64_t jitterKey;
+  uint32_t lineSeed = 0, holeOffset = 0;  // padded grids only
 
   StratifiedSet(uint64_t key, const StrataGrid& grid)
-      : orderSeed(static_cast<uint32_t>(hashAt(key, 0) >> 32)),
-        lineSeed(static_cast<uint32_t>(hashAt(key, 1) >> 32)),
-        holeOffset(static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength)),
-        jitterKey(hashCombine(key, 3)) {}
+      : orderSeed(static_cast<uint32_t>(hashAt(key, 0) >> 32)), jitterKey(hashAt(key, 3)) {
+    if (!grid.padded()) return;
+    lineSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
+    holeOffset = static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength);
+  }
 };
+
+// ---- progressive grids ---------------------------------------------------------------------------------------
+
+constexpr uint32_t reverseBits(uint32_t v, uint32_t bits) {
+  v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+  v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+  v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+  v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+  v = (v >> 16) | (v << 16);
+  return bits == 0 ? 0 : v >> (32 - bits);
+}
+
+constexpr uint32_t compactEvery2(uint32_t v) {  // bits 0, 2, 4, ... of v
+  v &= 0x55555555u;
+  v = (v | (v >> 1)) & 0x33333333u;
+  v = (v | (v >> 2)) & 0x0f0f0f0fu;
+  v = (v | (v >> 4)) & 0x00ff00ffu;
+  return (v | (v >> 8)) & 0x0000ffffu;
+}
+
+constexpr uint32_t compactEvery3(uint32_t v) {  // bits 0, 3, 6, ... of v
+  v &= 0x09249249u;
+  v = (v | (v >> 2)) & 0x030c30c3u;
+  v = (v | (v >> 4)) & 0x0300f00fu;
+  v = (v | (v >> 8)) & 0x030000ffu;
+  return (v | (v >> 16)) & 0x000003ffu;
+}
+
+// (cell + u) / 2^bits as an exact multiple of 2^-24: the top bits are the cell, the rest come from the jitter.
+inline float jitteredPow2(uint32_t cell, uint32_t bits, uint32_t jitter) {
+  return static_cast<float>((cell << (24 - bits)) | (jitter >> (8 + bits))) * 0x1p-24f;
+}
+
+// Burley, "Practical Hash-based Owen Scrambling" (JCGT 2020), the improved Laine-Karras hash: each step only
+// carries information from low bits to high bits, so q mod 2^j is a bijection of p mod 2^j for every j.
+constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return x;
+}
+
+inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out) {
+  const uint32_t mask = (1u << grid.pointBits) - 1u;
+  const uint32_t q = laineKarras(p, set.orderSeed) & mask;
+  const uint64_t bits01 = hashAt(set.jitterKey, q);
+  if (grid.arity == 1) {
+    out[0] = jitteredPow2(reverseBits(q, grid.pointBits), grid.pointBits, static_cast<uint32_t>(bits01 >> 32));
+  } else if (grid.arity == 2) {
+    out[0] = jitteredPow2(reverseBits(compactEvery2(q), grid.axisBits[0]), grid.axisBits[0],
+                          static_cast<uint32_t>(bits01 >> 32));
+    out[1] = jitteredPow2(reverseBits(compactEvery2(q >> 1), grid.axisBits[1]), grid.axisBits[1],
+                          static_cast<uint32_t>(bits01));
+  } else {
+    const uint64_t bits2 = hashAt(set.jitterKey ^ 0x5bd1e995u, q);
+    out[0] = jitteredPow2(reverseBits(compactEvery3(q), grid.axisBits[0]), grid.axisBits[0],
+                          static_cast<uint32_t>(bits01 >> 32));
+    out[1] = jitteredPow2(reverseBits(compactEvery3(q >> 1), grid.axisBits[1]), grid.axisBits[1],
+                          static_cast<uint32_t>(bits01));
+    out[2] = jitteredPow2(reverseBits(compactEvery3(q >> 2), grid.axisBits[2]), grid.axisBits[2],
+                          static_cast<uint32_t>(bits2 >> 32));
+  }
+}
+
+// ---- other grids ---------------------------------------------------------------------------------------------
 
 // (cell + u) / strata with a 32-bit jitter u, rounded to float, then moved by one ulp if rounding crossed the
 // stratum's border, so floor(value * strata) == cell holds exactly and 1.0 never occurs. Rounding moves the
@@ -34,30 +114,36 @@ inline float jittered(uint32_t cell, uint32_t strata, double inverseStrata, uint
   return value;
 }
 
-inline void stratifiedPoint(const StratifiedSet& set, const Dimension& dim, uint32_t p, float* out) {
-  const StrataGrid& grid = dim.grid;
-  const uint32_t q = permuteIndex(p, dim.setSize, set.orderSeed);
+inline void permutedPoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out) {
+  const uint32_t q = permuteIndex(p, grid.points, set.orderSeed);
   uint32_t cell[3];
   grid.cellOf(q, set.lineSeed, set.holeOffset, cell);
   // One 64-bit hash jitters two axes (32 bits each).
   const uint64_t bits01 = hashAt(set.jitterKey, uint64_t(q) * 2);
   out[0] = jittered(cell[0], grid.axis[0], grid.inverseAxis[0], static_cast<uint32_t>(bits01 >> 32));
-  if (dim.arity == 1) return;
+  if (grid.arity == 1) return;
   out[1] = jittered(cell[1], grid.axis[1], grid.inverseAxis[1], static_cast<uint32_t>(bits01));
-  if (dim.arity == 2) return;
+  if (grid.arity == 2) return;
   const uint64_t bits2 = hashAt(set.jitterKey, uint64_t(q) * 2 + 1);
   out[2] = jittered(cell[2], grid.axis[2], grid.inverseAxis[2], static_cast<uint32_t>(bits2 >> 32));
 }
 
 }  // namespace
 
-void fillStratified(uint64_t key, const Dimension& dim, float* out) {
+void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
   const StratifiedSet set(key, dim.grid);
-  for (uint32_t p = 0; p < dim.setSize; ++p) stratifiedPoint(set, dim, p, out + size_t(p) * dim.arity);
+  const StrataGrid& grid = dim.grid;
+  if (grid.progressive) {
+    for (uint32_t i = 0; i < count; ++i) progressivePoint(set, grid, first + i, out + size_t(i) * dim.arity);
+  } else {
+    for (uint32_t i = 0; i < count; ++i) permutedPoint(set, grid, first + i, out + size_t(i) * dim.arity);
+  }
 }
 
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
-  stratifiedPoint(StratifiedSet(key, dim.grid), dim, p, out);
+  const StratifiedSet set(key, dim.grid);
+  if (dim.grid.progressive) progressivePoint(set, dim.grid, p, out);
+  else permutedPoint(set, dim.grid, p, out);
 }
 
 }  // namespace stipple

@@ -1,8 +1,10 @@
-// patterns.h — the four sample patterns as pure functions of a set key.
+// patterns.h — the sample patterns as pure functions of a set key.
 //
-// Each pattern serves the set of one (pixel, dimension): M = k*N points of `arity` floats. fill* writes the
-// whole set (point p at out[p * arity]); point* writes point p alone and is bitwise equal to fill*'s point p.
-// The key is setKey(seed, pattern domain, pixel, dimension).
+// Each pattern serves the set of one (pixel, dimension, block): M points of `arity` floats (M = k*N for a
+// declared dimension, N for a streamed one). fill* writes points [first, first + count) of the set (point p at
+// out[(p - first) * arity]); point* writes point p alone and is bitwise equal to fill*'s point p. The key is
+// Sampler::setKey (seed, pattern domain, pixel, dimension, arity for streams, block).
+// A new pattern adds its pair here, a case to Sampler's dispatch and a row to the tables in abi.cpp.
 #pragma once
 
 #include "dimension.h"
@@ -11,17 +13,18 @@
 
 namespace stipple {
 
-void fillIndependent(uint64_t key, const Dimension& dim, float* out);
+void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
-void fillStratified(uint64_t key, const Dimension& dim, float* out);
+void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
-void fillPoisson(uint64_t key, const Dimension& dim, float* out);
+void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 // poisson-seed generates its set afresh on every call (the study's cost, kept deliberately); random access to
-// one sample therefore goes through a whole fill (Sampler::sample).
-void fillPoissonSeed(uint64_t key, const Dimension& dim, float* out);
+// one point therefore goes through a whole generation.
+void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 }  // namespace stipple

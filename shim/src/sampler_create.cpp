@@ -46,10 +46,7 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
   if (in.reserved != 0)
     throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                 argument + ".reserved is " + std::to_string(in.reserved) + "; expected 0");
-  Dimension dim;
-  dim.arity = in.arity;
-  dim.count = count;
-  dim.setSize = count * samplesPerPixel;
+  Dimension dim = makePatternDimension(pattern, in.arity, count, count * samplesPerPixel);
   if (in.name) {
     const size_t length = strnlen(in.name, STIPPLE_MAX_NAME_LENGTH + 1);
     if (length > STIPPLE_MAX_NAME_LENGTH)
@@ -58,8 +55,6 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
                                                   " characters; expected a shorter name or NULL");
     dim.name.assign(in.name, length);
   }
-  if (pattern == STIPPLE_PATTERN_STRATIFIED) dim.grid = StrataGrid::choose(dim.arity, dim.setSize);
-  if (pattern == STIPPLE_PATTERN_POISSON) dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize);
   return dim;
 }
 
@@ -78,17 +73,20 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
   if (desc.samples_per_pixel < 1 || desc.samples_per_pixel > STIPPLE_MAX_SAMPLES_PER_PIXEL)
     throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
                                                 "; expected 1.." + std::to_string(STIPPLE_MAX_SAMPLES_PER_PIXEL));
-  if (desc.dimension_count < 1 || desc.dimension_count > STIPPLE_MAX_DIMENSIONS)
+  if (desc.dimension_count > STIPPLE_MAX_DIMENSIONS)
     throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->dimension_count is " + std::to_string(desc.dimension_count) +
-                                                "; expected 1.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
-                                                " (an empty layout has nothing to sample)");
-  requireNonNull(desc.dimensions, "desc->dimensions");
+                                                "; expected 0.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
+                                                " (0: no declared layout, streams only)");
   if (desc.flags != 0)
     throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "desc->flags is " + std::to_string(desc.flags) + "; expected 0");
   if (desc.reserved != 0)
     throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                 "desc->reserved is " + std::to_string(desc.reserved) + "; expected 0");
 
+  if (desc.dimension_count == 0) {  // streams only; dimensions is not read and may be NULL
+    return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, {});
+  }
+  requireNonNull(desc.dimensions, "desc->dimensions");
   constexpr size_t kDimensionSize = sizeof(stipple_dimension_desc);
   const uint32_t stride = desc.dimensions[0].struct_size;
   if (stride < kDimensionSize)

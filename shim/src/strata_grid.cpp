@@ -4,6 +4,7 @@
 #include "permutation.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace stipple {
@@ -75,6 +76,12 @@ StrataGrid StrataGrid::choose(uint32_t arity, uint32_t points) {
   grid.lineDivider = FastDivider(grid.lineLength);
   grid.shortLineDivider = FastDivider(grid.lineLength > 1 ? grid.lineLength - 1 : 1);
   grid.axis0Divider = FastDivider(grid.axis[0]);
+  grid.progressive = grid.emptyCells == 0;
+  for (uint32_t c = 0; c < arity; ++c) {
+    grid.progressive = grid.progressive && (grid.axis[c] & (grid.axis[c] - 1)) == 0;
+    grid.axisBits[c] = static_cast<uint32_t>(std::countr_zero(grid.axis[c]));
+    grid.pointBits += grid.axisBits[c];
+  }
   return grid;
 }
 

@@ -27,6 +27,11 @@ struct StrataGrid {
   uint32_t emptyCells = 0;   // s = cells - M (0 for an exact factorisation)
   double inverseAxis[3] = {1, 1, 1};
   FastDivider lineDivider, shortLineDivider, axis0Divider;  // by L, L - 1 (padded only), axis[0]
+  // Progressive grids (exact, every axis a power of two, so M = 2^pointBits): set points are read in the
+  // interleaved bit-reversed order of their cells (see pattern_stratified.cpp); axisBits[c] = log2(axis[c]).
+  bool progressive = false;
+  uint32_t axisBits[3] = {0, 0, 0};
+  uint32_t pointBits = 0;
 
   static StrataGrid choose(uint32_t arity, uint32_t points);
   bool padded() const { return emptyCells != 0; }
