@@ -16,6 +16,7 @@
 #include "hash.h"
 #include "patterns.h"
 #include "permutation.h"
+#include "progressive_strata.h"
 
 #include <bit>
 
@@ -29,7 +30,7 @@ struct StratifiedSet {
   uint32_t lineSeed = 0, holeOffset = 0;  // padded grids only
 
   StratifiedSet(uint64_t key, const StrataGrid& grid)
-      : orderSeed(static_cast<uint32_t>(hashAt(key, 0) >> 32)), jitterKey(hashAt(key, 3)) {
+      : orderSeed(static_cast<uint32_t>(key >> 32)), jitterKey(hashAt(key, 3)) {
     if (!grid.padded()) return;
     lineSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
     holeOffset = static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength);
@@ -37,36 +38,6 @@ struct StratifiedSet {
 };
 
 // ---- progressive grids ---------------------------------------------------------------------------------------
-
-constexpr uint32_t reverseBits(uint32_t v, uint32_t bits) {
-  v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
-  v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
-  v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
-  v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
-  v = (v >> 16) | (v << 16);
-  return bits == 0 ? 0 : v >> (32 - bits);
-}
-
-constexpr uint32_t compactEvery2(uint32_t v) {  // bits 0, 2, 4, ... of v
-  v &= 0x55555555u;
-  v = (v | (v >> 1)) & 0x33333333u;
-  v = (v | (v >> 2)) & 0x0f0f0f0fu;
-  v = (v | (v >> 4)) & 0x00ff00ffu;
-  return (v | (v >> 8)) & 0x0000ffffu;
-}
-
-constexpr uint32_t compactEvery3(uint32_t v) {  // bits 0, 3, 6, ... of v
-  v &= 0x09249249u;
-  v = (v | (v >> 2)) & 0x030c30c3u;
-  v = (v | (v >> 4)) & 0x0300f00fu;
-  v = (v | (v >> 8)) & 0x030000ffu;
-  return (v | (v >> 16)) & 0x000003ffu;
-}
-
-// (cell + u) / 2^bits as an exact multiple of 2^-24: the top bits are the cell, the rest come from the jitter.
-inline float jitteredPow2(uint32_t cell, uint32_t bits, uint32_t jitter) {
-  return static_cast<float>((cell << (24 - bits)) | (jitter >> (8 + bits))) * 0x1p-24f;
-}
 
 // Burley, "Practical Hash-based Owen Scrambling" (JCGT 2020), the improved Laine-Karras hash: each step only
 // carries information from low bits to high bits, so q mod 2^j is a bijection of p mod 2^j for every j.
@@ -79,26 +50,39 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
   return x;
 }
 
+template <uint32_t Arity>
 inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out) {
   const uint32_t mask = (1u << grid.pointBits) - 1u;
   const uint32_t q = laineKarras(p, set.orderSeed) & mask;
-  const uint64_t bits01 = hashAt(set.jitterKey, q);
-  if (grid.arity == 1) {
-    out[0] = jitteredPow2(reverseBits(q, grid.pointBits), grid.pointBits, static_cast<uint32_t>(bits01 >> 32));
-  } else if (grid.arity == 2) {
-    out[0] = jitteredPow2(reverseBits(compactEvery2(q), grid.axisBits[0]), grid.axisBits[0],
-                          static_cast<uint32_t>(bits01 >> 32));
-    out[1] = jitteredPow2(reverseBits(compactEvery2(q >> 1), grid.axisBits[1]), grid.axisBits[1],
-                          static_cast<uint32_t>(bits01));
+  // 1D needs only the top 32 bits: one multiply of the keyed counter carries every input bit into them (and a
+  // uniform key makes them uniform); 2D and 3D also use low bits and take the full finaliser.
+  const uint64_t bits = Arity == 1 ? (set.jitterKey ^ (uint64_t(q) * kGolden64)) * 0xd1342543de82ef95ull
+                                   : hashAt(set.jitterKey, q);
+  uint32_t top[3];  // cell[c] << (24 - axisBits[c])
+  if (grid.cellTable) {
+    const uint32_t* words = grid.cellTable->data() + size_t(q) * Arity;
+    for (uint32_t c = 0; c < Arity; ++c) top[c] = words[c];
   } else {
-    const uint64_t bits2 = hashAt(set.jitterKey ^ 0x5bd1e995u, q);
-    out[0] = jitteredPow2(reverseBits(compactEvery3(q), grid.axisBits[0]), grid.axisBits[0],
-                          static_cast<uint32_t>(bits01 >> 32));
-    out[1] = jitteredPow2(reverseBits(compactEvery3(q >> 1), grid.axisBits[1]), grid.axisBits[1],
-                          static_cast<uint32_t>(bits01));
-    out[2] = jitteredPow2(reverseBits(compactEvery3(q >> 2), grid.axisBits[2]), grid.axisBits[2],
-                          static_cast<uint32_t>(bits2 >> 32));
+    uint32_t cell[3];
+    progressiveCell(q, Arity, grid.axisBits, cell);
+    for (uint32_t c = 0; c < Arity; ++c) top[c] = cell[c] << (24 - grid.axisBits[c]);
   }
+  const auto value = [](uint32_t topBits, uint32_t axisBits, uint32_t jitter) {
+    // < 2^24, so the signed conversion is exact.
+    return static_cast<float>(static_cast<int32_t>(topBits | (jitter >> (8 + axisBits)))) * 0x1p-24f;
+  };
+  if constexpr (Arity <= 2) {
+    out[0] = value(top[0], grid.axisBits[0], static_cast<uint32_t>(bits >> 32));
+    if constexpr (Arity == 2) out[1] = value(top[1], grid.axisBits[1], static_cast<uint32_t>(bits));
+  } else {
+    for (uint32_t c = 0; c < 3; ++c)
+      out[c] = value(top[c], grid.axisBits[c], static_cast<uint32_t>(bits >> (43 - 21 * c)) << 11);
+  }
+}
+
+template <uint32_t Arity>
+void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out) {
+  for (uint32_t i = 0; i < count; ++i) progressivePoint<Arity>(set, grid, first + i, out + size_t(i) * Arity);
 }
 
 // ---- other grids ---------------------------------------------------------------------------------------------
@@ -134,7 +118,11 @@ void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t
   const StratifiedSet set(key, dim.grid);
   const StrataGrid& grid = dim.grid;
   if (grid.progressive) {
-    for (uint32_t i = 0; i < count; ++i) progressivePoint(set, grid, first + i, out + size_t(i) * dim.arity);
+    switch (dim.arity) {
+      case 1: return fillProgressive<1>(set, grid, first, count, out);
+      case 2: return fillProgressive<2>(set, grid, first, count, out);
+      default: return fillProgressive<3>(set, grid, first, count, out);
+    }
   } else {
     for (uint32_t i = 0; i < count; ++i) permutedPoint(set, grid, first + i, out + size_t(i) * dim.arity);
   }
@@ -142,8 +130,12 @@ void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t
 
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
   const StratifiedSet set(key, dim.grid);
-  if (dim.grid.progressive) progressivePoint(set, dim.grid, p, out);
-  else permutedPoint(set, dim.grid, p, out);
+  if (!dim.grid.progressive) return permutedPoint(set, dim.grid, p, out);
+  switch (dim.arity) {
+    case 1: return progressivePoint<1>(set, dim.grid, p, out);
+    case 2: return progressivePoint<2>(set, dim.grid, p, out);
+    default: return progressivePoint<3>(set, dim.grid, p, out);
+  }
 }
 
 }  // namespace stipple

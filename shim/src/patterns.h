@@ -19,6 +19,10 @@ void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out
 void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
+// The stored set a "poisson" set key serves: its top 32 bits scaled to [0, setCount) (no division per value).
+constexpr uint32_t poissonSetIndex(uint64_t key, uint32_t setCount) {
+  return static_cast<uint32_t>(((key >> 32) * setCount) >> 32);
+}
 void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 

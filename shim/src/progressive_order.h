@@ -14,7 +14,7 @@
 
 namespace stipple {
 
-inline constexpr uint32_t kFarthestPointLimit = 4096;
+inline constexpr uint32_t kFarthestPointLimit = 1024;
 
 // Reorders points (M * arity floats in [0,1)) in place.
 void orderProgressively(std::vector<float>& points, uint32_t arity);
