@@ -26,13 +26,15 @@ namespace {
 
 constexpr uint8_t kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
-// v in (-1, 2) wrapped into [0, 1) without a branch (the wrap is a coin flip per value: a branch is mispredicted
-// half the time, which compilers emit for a conditional subtract). w = v + 1 lies in [0, 3) and truncation is its
-// floor; w - floor(w) is exact in [0, 1) (Sterbenz), and w's rounding moves a value by at most 2^-24.
+// v in (-1, 2) wrapped into [0, 1) without a data-dependent branch (the wrap is a coin flip per value: a branch
+// is mispredicted half the time, which compilers emit for a conditional subtract). r = v - trunc(v) is exact and
+// in (-1, 1); a negative r (its sign bit) gets 1.0 added through integer masks. That sum may round up to 1.0 (as
+// may -0.0 + 1): the last step maps it to 0, a select that is practically never taken.
 inline float wrapUnit(float v) {
-  const float w = v + 1.0f;
-  const float r = w - static_cast<float>(static_cast<int32_t>(w));
-  return r < 1.0f ? r : 0.0f;  // cannot happen (r < 1 always); kept as a guard the compiler turns into a select
+  float r = v - static_cast<float>(static_cast<int32_t>(v));
+  const uint32_t negative = std::bit_cast<uint32_t>(r) >> 31;
+  r += std::bit_cast<float>((0u - negative) & 0x3f800000u);
+  return r < 1.0f ? r : 0.0f;
 }
 
 struct TorusMap {
@@ -99,6 +101,17 @@ void serveLayered(const TorusMap& map, const float* stored, uint32_t points, uin
       continue;
     }
     const uint32_t mask = p < 2 ? 0 : (map.orderSeed & (base - 1));
+    if (p == base && layerEnd == 2 * base && base >= 2) {
+      // A whole layer: XOR is an involution, so walk the stored points in memory order (the family's sets do not
+      // stay in cache between pixels) and scatter them to their served positions.
+      for (uint32_t j = 0; j < base; ++j) {
+        const float* x = stored + size_t(base + j) * Arity;
+        float* o = out + size_t(base + (j ^ mask) - first) * Arity;
+        for (uint32_t c = 0; c < Arity; ++c) o[c] = wrapUnit(shift[c] + sign[c] * x[source[c]]);
+      }
+      p = layerEnd;
+      continue;
+    }
     for (; p < layerEnd; ++p) {
       const float* x = stored + size_t(base + ((p - base) ^ mask)) * Arity;
       float* o = out + size_t(p - first) * Arity;
