@@ -66,3 +66,8 @@ target_link_libraries(quarter_disk_abi_1_0 PRIVATE ${CMAKE_DL_LIBS} m)
 add_dependencies(quarter_disk_abi_1_0 stipple)
 add_test(NAME shim.host_abi_1_0 COMMAND quarter_disk_abi_1_0 $<TARGET_FILE:stipple>)
 set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")
+
+# The stipple.hpp host: unbiased against the closed form with indices past N, progressive passes equal one pass,
+# stratified per call index with data-dependent skipped calls (see the source).
+add_test(NAME shim.tiny_path_tracer COMMAND tiny_path_tracer)
+set_tests_properties(shim.tiny_path_tracer PROPERTIES LABELS "statistical")

@@ -3,12 +3,13 @@
 // Order of the set's points (what a prefix of the set is worth):
 //  - progressive grids (exact, every axis a power of two; M = 2^m): point p sits in the cell whose coordinates,
 //    read as bits interleaved axis by axis (x, y, z, x, ...) from each axis' most significant bit, spell the
-//    bit-reversal of q = LK(p) mod M, where LK is a hashed Laine-Karras permutation (Burley 2020: bit k of q
-//    depends on bits 0..k of p only, bijectively). p < 2^j therefore gives every value of q's low j bits: every
-//    prefix of 2^j points holds one point in each cell of the coarse 2^j-cell grid made of the first j
-//    interleaved bits (progressive jittered sampling), and so does every aligned block of 2^j points. LK is
-//    seeded per (pixel, dimension, block): an Owen-style scramble of the cell tree, which makes every sample
-//    uniform and sample i of one dimension independent of sample i of another.
+//    bit-reversal of q = S(p), where S is a nested uniform scramble from the top bit down (Burley 2020: bit k of
+//    q is bit k of p flipped by a hash of p's bits above k; computed as reverse(LK(reverse(p))) with the
+//    Laine-Karras hash LK). p < 2^j therefore gives every value of q's low j bits: every prefix of 2^j points
+//    (and every aligned block of 2^j) holds one point in each cell of the coarse 2^j-cell grid made of the first
+//    j interleaved bits (progressive jittered sampling). S is seeded per (pixel, dimension, block), so samples are
+//    uniform, and because a flip depends on the higher bits, two dimensions pair their coarse cells anew in every
+//    pair of samples (a fixed XOR of p would pair them the same way for all samples of a pixel).
 //  - other grids (non-power-of-two axes, padded grids): a hashed random permutation of the points (Kensler 2013):
 //    a prefix is a uniformly random subset of the strata.
 // Per (pixel, dimension, block) the key gives the order (rotation or permutation), the padded lines and hole
@@ -53,7 +54,8 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
 template <uint32_t Arity>
 inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out) {
   const uint32_t mask = (1u << grid.pointBits) - 1u;
-  const uint32_t q = laineKarras(p, set.orderSeed) & mask;
+  // r = reverse(q): the table is indexed by r, so only p needs reversing.
+  const uint32_t q = laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask;
   // 1D needs only the top 32 bits: one multiply of the keyed counter carries every input bit into them (and a
   // uniform key makes them uniform); 2D and 3D also use low bits and take the full finaliser.
   const uint64_t bits = Arity == 1 ? (set.jitterKey ^ (uint64_t(q) * kGolden64)) * 0xd1342543de82ef95ull
@@ -64,7 +66,7 @@ inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, u
     for (uint32_t c = 0; c < Arity; ++c) top[c] = words[c];
   } else {
     uint32_t cell[3];
-    progressiveCell(q, Arity, grid.axisBits, cell);
+    progressiveCell(reverseBits(q, grid.pointBits), Arity, grid.axisBits, cell);
     for (uint32_t c = 0; c < Arity; ++c) top[c] = cell[c] << (24 - grid.axisBits[c]);
   }
   const auto value = [](uint32_t topBits, uint32_t axisBits, uint32_t jitter) {
