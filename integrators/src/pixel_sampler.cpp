@@ -5,6 +5,18 @@
 
 namespace stipple::render {
 
+namespace {
+double emptyClockInterval() {
+    double sum = 0;
+    for (int i = 0; i < 4096; ++i) {
+        auto a = std::chrono::steady_clock::now();
+        auto b = std::chrono::steady_clock::now();
+        sum += std::chrono::duration<double>(b - a).count();
+    }
+    return sum / 4096;
+}
+} // namespace
+
 PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, uint32_t spp, uint64_t seed,
                            const SampleLayout& layout)
     : shim_(shim), spp_(spp), layout_(layout) {
@@ -32,7 +44,9 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     if (api.sampler_create(&desc, &sampler_) != STIPPLE_OK)
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + shim.lastError());
+    clockSeconds_ = emptyClockInterval();
 }
+
 
 PixelSampler::~PixelSampler() { shim_.api().sampler_release(sampler_); }
 
@@ -64,7 +78,8 @@ void PixelSamples::fetch(uint32_t dim, uint32_t sampleIndex) const {
     if ((draws_++ & 15) == 0) {
         auto start = std::chrono::steady_clock::now();
         sampler_->draw(x_, y_, sampleIndex, dim, &values_[offset_[dim]], count);
-        samplerSeconds += 16.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        samplerSeconds += 16.0 * std::max(0.0, elapsed - sampler_->clockSeconds_);
     } else {
         sampler_->draw(x_, y_, sampleIndex, dim, &values_[offset_[dim]], count);
     }

@@ -31,7 +31,7 @@ struct StratifiedSet {
   uint32_t lineSeed = 0, holeOffset = 0;  // padded grids only
 
   StratifiedSet(uint64_t key, const StrataGrid& grid)
-      : orderSeed(static_cast<uint32_t>(key >> 32)), jitterKey(hashAt(key, 3)) {
+      : orderSeed(static_cast<uint32_t>(key >> 32)), jitterKey(key ^ 0x6a09e667f3bcc909ull) {
     if (!grid.padded()) return;
     lineSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
     holeOffset = static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength);

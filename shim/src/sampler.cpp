@@ -33,7 +33,11 @@ Dimension makePatternDimension(uint32_t pattern, uint32_t arity, uint32_t count,
 }
 
 Sampler::Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions)
-    : pattern_(pattern), samplesPerPixel_(samplesPerPixel), seed_(seed), dimensions_(std::move(dimensions)) {
+    : pattern_(pattern),
+      samplesPerPixel_(samplesPerPixel),
+      seed_(seed),
+      seedKey_(seedKey(seed, kPatternDomain[pattern])),
+      dimensions_(std::move(dimensions)) {
   // Streams: grids now (cheap), Poisson families on first use (they count against the cache budget).
   for (uint32_t a = 1; a <= 3; ++a) {
     Dimension& s = streams_[a - 1];
@@ -44,11 +48,11 @@ Sampler::Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std:
 }
 
 uint64_t Sampler::layoutKey(uint32_t pixelX, uint32_t pixelY, uint32_t d, uint32_t block) const {
-  return blockKey(setKey(seed_, kPatternDomain[pattern_], pixelX, pixelY, d), block);
+  return blockKey(setKeyFrom(seedKey_, pixelX, pixelY, d), block);
 }
 
 uint64_t Sampler::streamKey(uint32_t pixelX, uint32_t pixelY, uint32_t d, uint32_t arity, uint32_t block) const {
-  return blockKey(hashCombine(setKey(seed_, kPatternDomain[pattern_], pixelX, pixelY, d), kStreamWord | arity), block);
+  return blockKey(hashCombine(setKeyFrom(seedKey_, pixelX, pixelY, d), kStreamWord | arity), block);
 }
 
 const Dimension& Sampler::streamDimension(uint32_t arity) const {
@@ -85,7 +89,7 @@ void Sampler::fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out
 
 void Sampler::sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, float* out) const {
   const Dimension& dim = dimensions_[d];
-  const uint32_t block = sampleIndex / samplesPerPixel_;
+  const uint32_t block = sampleIndex < samplesPerPixel_ ? 0 : sampleIndex / samplesPerPixel_;  // no division in block 0
   const uint32_t position = sampleIndex - block * samplesPerPixel_;
   const uint64_t key = layoutKey(pixelX, pixelY, d, block);
   if (dim.count == 1) return point(key, dim, position, out);
@@ -94,7 +98,7 @@ void Sampler::sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uin
 
 void Sampler::stream(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, uint32_t arity,
                      float* out) const {
-  const uint32_t block = sampleIndex / samplesPerPixel_;
+  const uint32_t block = sampleIndex < samplesPerPixel_ ? 0 : sampleIndex / samplesPerPixel_;
   const uint32_t position = sampleIndex - block * samplesPerPixel_;
   point(streamKey(pixelX, pixelY, d, arity, block), streamDimension(arity), position, out);
 }

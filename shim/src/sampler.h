@@ -50,6 +50,7 @@ class Sampler {
   uint32_t pattern_;
   uint32_t samplesPerPixel_;
   uint64_t seed_;
+  uint64_t seedKey_;  // seedKey(seed, the pattern's hash domain)
   std::vector<Dimension> dimensions_;
   // Streams of arity 1, 2, 3: sets of N points. A poisson stream acquires its family on first use.
   std::array<Dimension, 3> streams_;
