@@ -3,13 +3,18 @@
 // Order of the set's points (what a prefix of the set is worth):
 //  - progressive grids (exact, every axis a power of two; M = 2^m): point p sits in the cell whose coordinates,
 //    read as bits interleaved axis by axis (x, y, z, x, ...) from each axis' most significant bit, spell the
-//    bit-reversal of q = S(p), where S is a nested uniform scramble from the top bit down (Burley 2020: bit k of
-//    q is bit k of p flipped by a hash of p's bits above k; computed as reverse(LK(reverse(p))) with the
-//    Laine-Karras hash LK). p < 2^j therefore gives every value of q's low j bits: every prefix of 2^j points
-//    (and every aligned block of 2^j) holds one point in each cell of the coarse 2^j-cell grid made of the first
-//    j interleaved bits (progressive jittered sampling). S is seeded per (pixel, dimension, block), so samples are
-//    uniform, and because a flip depends on the higher bits, two dimensions pair their coarse cells anew in every
-//    pair of samples (a fixed XOR of p would pair them the same way for all samples of a pixel).
+//    bit-reversal of q = V(S(p)):
+//      S, the index shuffle: a nested uniform scramble from the top bit down (bit k of S(p) is bit k of p flipped
+//        by a hash of p's bits above k; reverse(LK(reverse(p))) with the Laine-Karras hash LK, Burley 2020).
+//        p < 2^j gives every value of S(p)'s low j bits, and because a flip depends on the higher bits, two
+//        dimensions pair their coarse cells anew in every pair of samples.
+//      V, the value scramble: LK itself (bit k flipped by a hash of the bits below k), a bijection of the low j
+//        bits for every j: Owen scrambling of the cell tree, so the sub-cell a prefix point takes inside its
+//        coarse cell is random per coarse cell (without it, every point of a prefix would sit in the same corner
+//        of its coarse cell).
+//    Hence every prefix of 2^j points (and every aligned block of 2^j) holds one point in each cell of the coarse
+//    2^j-cell grid of the first j interleaved bits, uniformly placed in it (progressive jittered sampling). Both
+//    seeds come from the (pixel, dimension, block) key.
 //  - other grids (non-power-of-two axes, padded grids): a hashed random permutation of the points (Kensler 2013):
 //    a prefix is a uniformly random subset of the strata.
 // Per (pixel, dimension, block) the key gives the order (rotation or permutation), the padded lines and hole
@@ -26,12 +31,15 @@ namespace stipple {
 namespace {
 
 struct StratifiedSet {
-  uint32_t orderSeed;  // Laine-Karras seed (progressive) or permutation seed
+  uint32_t orderSeed;  // index shuffle seed (progressive) or permutation seed
+  uint32_t valueSeed;  // progressive: the value scramble's seed
   uint64_t jitterKey;
   uint32_t lineSeed = 0, holeOffset = 0;  // padded grids only
 
   StratifiedSet(uint64_t key, const StrataGrid& grid)
-      : orderSeed(static_cast<uint32_t>(key >> 32)), jitterKey(key ^ 0x6a09e667f3bcc909ull) {
+      : orderSeed(static_cast<uint32_t>(key >> 32)),
+        valueSeed(static_cast<uint32_t>(key)),
+        jitterKey(key ^ 0x6a09e667f3bcc909ull) {
     if (!grid.padded()) return;
     lineSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
     holeOffset = static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength);
@@ -54,8 +62,10 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
 template <uint32_t Arity>
 inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out) {
   const uint32_t mask = (1u << grid.pointBits) - 1u;
-  // r = reverse(q): the table is indexed by r, so only p needs reversing.
-  const uint32_t q = laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask;
+  // Index shuffle (top-down nested scramble of p), then value scramble (bottom-up: a coarse cell's sub-cell is a
+  // hash of the coarse bits), then the cell of q from the table.
+  const uint32_t shuffled = reverseBits(laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits);
+  const uint32_t q = laineKarras(shuffled, set.valueSeed) & mask;
   // 1D needs only the top 32 bits: one multiply of the keyed counter carries every input bit into them (and a
   // uniform key makes them uniform); 2D and 3D also use low bits and take the full finaliser.
   const uint64_t bits = Arity == 1 ? (set.jitterKey ^ (uint64_t(q) * kGolden64)) * 0xd1342543de82ef95ull
@@ -66,7 +76,7 @@ inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, u
     for (uint32_t c = 0; c < Arity; ++c) top[c] = words[c];
   } else {
     uint32_t cell[3];
-    progressiveCell(reverseBits(q, grid.pointBits), Arity, grid.axisBits, cell);
+    progressiveCell(q, Arity, grid.axisBits, cell);
     for (uint32_t c = 0; c < Arity; ++c) top[c] = cell[c] << (24 - grid.axisBits[c]);
   }
   const auto value = [](uint32_t topBits, uint32_t axisBits, uint32_t jitter) {

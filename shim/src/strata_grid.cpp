@@ -36,12 +36,10 @@ std::shared_ptr<const std::vector<uint32_t>> sharedCellTable(uint32_t arity, con
   auto& table = tables[key];
   if (!table) {
     auto words = std::make_shared<std::vector<uint32_t>>(size_t(points) * arity);
-    uint32_t bits = 0;
-    for (uint32_t c = 0; c < arity; ++c) bits += axisBits[c];
-    for (uint32_t r = 0; r < points; ++r) {  // indexed by r = reverse(q) (see pattern_stratified.cpp)
+    for (uint32_t q = 0; q < points; ++q) {
       uint32_t cell[3];
-      progressiveCell(reverseBits(r, bits), arity, axisBits, cell);
-      for (uint32_t c = 0; c < arity; ++c) (*words)[size_t(r) * arity + c] = cell[c] << (24 - axisBits[c]);
+      progressiveCell(q, arity, axisBits, cell);
+      for (uint32_t c = 0; c < arity; ++c) (*words)[size_t(q) * arity + c] = cell[c] << (24 - axisBits[c]);
     }
     table = std::move(words);
   }

@@ -34,7 +34,7 @@ struct StrataGrid {
   bool progressive = false;
   uint32_t axisBits[3] = {0, 0, 0};
   uint32_t pointBits = 0;
-  // Progressive grids with M <= kCellTableLimit: for each r = reverse(q), arity words cell[c] << (24 - axisBits[c]) (the cell's
+  // Progressive grids with M <= kCellTableLimit: for each q, arity words cell[c] << (24 - axisBits[c]) (the cell's
   // top bits of a 24-bit value), shared by every grid of the same shape. Larger grids compute cells on the fly.
   static constexpr uint32_t kCellTableLimit = 1u << 16;
   std::shared_ptr<const std::vector<uint32_t>> cellTable;
