@@ -64,7 +64,10 @@ inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, u
   const uint32_t mask = (1u << grid.pointBits) - 1u;
   // Index shuffle (top-down nested scramble of p), then value scramble (bottom-up: a coarse cell's sub-cell is a
   // hash of the coarse bits), then the cell of q from the table.
-  const uint32_t shuffled = reverseBits(laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits);
+  const uint32_t shuffled =
+      grid.pointBits <= 16
+          ? reverseBits16(laineKarras(reverseBits16(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits)
+          : reverseBits(laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits);
   const uint32_t q = laineKarras(shuffled, set.valueSeed) & mask;
   // 1D needs only the top 32 bits: one multiply of the keyed counter carries every input bit into them (and a
   // uniform key makes them uniform); 2D and 3D also use low bits and take the full finaliser.

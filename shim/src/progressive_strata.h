@@ -17,6 +17,21 @@ constexpr uint32_t reverseBits(uint32_t v, uint32_t bits) {
   return bits == 0 ? 0 : v >> (32 - bits);
 }
 
+// Bit-reversal of a byte, tabulated: reversing a value of <= 16 bits is then two lookups (the per-value path).
+struct ReversedBytes {
+  uint8_t table[256];
+  constexpr ReversedBytes() : table() {
+    for (uint32_t b = 0; b < 256; ++b) table[b] = static_cast<uint8_t>(reverseBits(b, 8));
+  }
+};
+inline constexpr ReversedBytes kReversedBytes{};
+
+// reverseBits(v, bits) for bits <= 16.
+inline uint32_t reverseBits16(uint32_t v, uint32_t bits) {
+  const uint32_t r = (uint32_t(kReversedBytes.table[v & 0xffu]) << 8) | kReversedBytes.table[(v >> 8) & 0xffu];
+  return r >> (16 - bits);
+}
+
 constexpr uint32_t compactEvery2(uint32_t v) {  // bits 0, 2, 4, ... of v
   v &= 0x55555555u;
   v = (v | (v >> 1)) & 0x33333333u;
