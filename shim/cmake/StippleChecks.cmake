@@ -71,3 +71,21 @@ set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")
 # stratified per call index with data-dependent skipped calls (see the source).
 add_test(NAME shim.tiny_path_tracer COMMAND tiny_path_tracer)
 set_tests_properties(shim.tiny_path_tracer PROPERTIES LABELS "statistical")
+
+# The importable NumPy binding (examples/python/stipple_numpy.py) and its test; needs Debian's python3-numpy
+# (hence /usr/bin first), and no sanitizer build (an uninstrumented python3 cannot load it).
+if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+  find_program(STIPPLE_NUMPY_PYTHON3 NAMES python3 HINTS /usr/bin)
+  if(STIPPLE_NUMPY_PYTHON3)
+    execute_process(COMMAND ${STIPPLE_NUMPY_PYTHON3} -c "import numpy" RESULT_VARIABLE _stipple_no_numpy
+                    OUTPUT_QUIET ERROR_QUIET)
+    if(_stipple_no_numpy EQUAL 0)
+      add_test(NAME shim.stipple_numpy
+        COMMAND ${STIPPLE_NUMPY_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/examples/python/test_stipple_numpy.py
+                $<TARGET_FILE:stipple>)
+      set_tests_properties(shim.stipple_numpy PROPERTIES LABELS "unit;statistical")
+    else()
+      message(WARNING "python3 without numpy (python3-numpy): the shim.stipple_numpy test is not registered")
+    endif()
+  endif()
+endif()
