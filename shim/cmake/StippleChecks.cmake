@@ -7,7 +7,10 @@ add_test(NAME shim.header_c99
 add_test(NAME shim.header_cxx
   COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -x c++ -pedantic -Wall -Wextra -Werror -fsyntax-only
           -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_c99.c)
-set_tests_properties(shim.header_c99 shim.header_cxx PROPERTIES LABELS unit)
+add_test(NAME shim.header_hpp
+  COMMAND ${CMAKE_CXX_COMPILER} -std=c++17 -pedantic -Wall -Wextra -Werror -fsyntax-only
+          -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_hpp.cpp)
+set_tests_properties(shim.header_c99 shim.header_cxx shim.header_hpp PROPERTIES LABELS unit)
 add_library(stipple_header_c99 OBJECT tests/header_c99.c)
 set_target_properties(stipple_header_c99 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
 target_compile_options(stipple_header_c99 PRIVATE -pedantic -Wall -Wextra -Werror)
