@@ -45,6 +45,7 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + shim.lastError());
     clockSeconds_ = emptyClockInterval();
+    wholePixel_ = pattern == "poisson-seed";
 }
 
 
@@ -62,7 +63,14 @@ void PixelSampler::draw(uint32_t x, uint32_t y, uint32_t i, uint32_t d, float* o
                         std::to_string(i) + ", dimension " + std::to_string(d) + ") failed: " + shim_.lastError());
 }
 
-PixelSamples::PixelSamples(const PixelSampler& sampler) : sampler_(&sampler) {
+void PixelSampler::drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const {
+    if (shim_.api().sampler_fill_pixel(sampler_, x, y, d, out, count) != STIPPLE_OK)
+        throw ShimError("stipple_sampler_fill_pixel(" + std::to_string(x) + ", " + std::to_string(y) +
+                        ", dimension " + std::to_string(d) + ") failed: " + shim_.lastError());
+}
+
+PixelSamples::PixelSamples(const PixelSampler& sampler)
+    : sampler_(&sampler), wholePixel_(sampler.drawsWholePixel()), spp_(sampler.samplesPerPixel()) {
     size_t total = 0;
     for (const Dimension& d : sampler.layout().dimensions()) {
         offset_.push_back(total);
@@ -71,6 +79,19 @@ PixelSamples::PixelSamples(const PixelSampler& sampler) : sampler_(&sampler) {
     }
     values_.assign(total + 1, 0.0f); // + 1: a valid address for an empty layout
     heldSample_.assign(offset_.size(), kNone);
+    if (wholePixel_) {
+        pixelOffset_.push_back(0);
+        for (size_t d = 0; d < offset_.size(); ++d)
+            pixelOffset_.push_back(pixelOffset_.back() + size_t(spp_) * ((d + 1 < offset_.size() ? offset_[d + 1] : total) - offset_[d]));
+        pixelValues_.assign(pixelOffset_.back() + 1, 0.0f);
+    }
+}
+
+void PixelSamples::fetchPixel(uint32_t dim) const {
+    auto start = std::chrono::steady_clock::now();
+    sampler_->drawPixel(x_, y_, dim, &pixelValues_[pixelOffset_[dim]], pixelOffset_[dim + 1] - pixelOffset_[dim]);
+    samplerSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    heldSample_[dim] = 0;
 }
 
 void PixelSamples::fetch(uint32_t dim, uint32_t sampleIndex) const {

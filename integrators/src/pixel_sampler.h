@@ -1,7 +1,8 @@
 // A shim sampler for one render plus the per-thread cache and the per-(pixel, sample) view integrators read.
 // Values are drawn lazily: the first read of a dimension in a pixel sample asks the shim for that sample's k
 // values of that dimension (stipple_sampler_sample, random access), so a path that ends at its first bounce never
-// pays for the dimensions of deeper bounces. Time inside the shim is accumulated per cache (see PixelSamples).
+// pays for the dimensions of deeper bounces (poisson-seed, which generates a whole set for any request, is drawn a
+// pixel's dimension at a time). Time inside the shim is accumulated per cache (see PixelSamples).
 #pragma once
 
 #include "sample_layout.h"
@@ -27,15 +28,19 @@ public:
     const SampleLayout& layout() const { return layout_; }
     // Points `out` at pixel (x, y); values are drawn when first read.
     void startPixel(uint32_t x, uint32_t y, PixelSamples& out) const;
+    // poisson-seed generates a whole set for any request, so it is drawn a pixel's dimension at a time.
+    bool drawsWholePixel() const { return wholePixel_; }
 
 private:
     friend class PixelSamples;
     // Sample i's k values of dimension d into out (k*arity floats). Throws ShimError on failure.
     void draw(uint32_t x, uint32_t y, uint32_t i, uint32_t d, float* out, size_t count) const;
+    void drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const;
 
     const ShimLibrary& shim_;
     stipple_sampler sampler_ = nullptr;
     double clockSeconds_ = 0; // an empty steady_clock interval
+    bool wholePixel_ = false;
     uint32_t spp_;
     SampleLayout layout_;
 };
@@ -54,9 +59,15 @@ private:
     friend class PixelSampler;
     friend class SampleView;
     const float* values(uint32_t dim, uint32_t sampleIndex) const {
+        if (wholePixel_) {
+            if (heldSample_[dim] == kNone) fetchPixel(dim);
+            return &pixelValues_[pixelOffset_[dim] + size_t(sampleIndex) * (pixelOffset_[dim + 1] - pixelOffset_[dim]) /
+                                                          spp_];
+        }
         if (heldSample_[dim] != sampleIndex) fetch(dim, sampleIndex);
         return &values_[offset_[dim]];
     }
+    void fetchPixel(uint32_t dim) const;
     void fetch(uint32_t dim, uint32_t sampleIndex) const;
 
     const PixelSampler* sampler_;
@@ -66,6 +77,10 @@ private:
     mutable uint64_t draws_ = 0;
     std::vector<size_t> offset_;
     std::vector<uint32_t> arity_;
+    bool wholePixel_ = false;                  // the sampler's drawsWholePixel()
+    uint32_t spp_ = 0;
+    mutable std::vector<float> pixelValues_;  // whole-pixel mode: per dimension, N*k*arity floats
+    std::vector<size_t> pixelOffset_;         // dimension count + 1 entries
     static constexpr uint32_t kNone = 0xffffffffu;
 };
 
