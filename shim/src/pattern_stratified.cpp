@@ -62,7 +62,8 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
   return x;
 }
 
-template <uint32_t Arity>
+// Blue is a template parameter so that the flagless loop is exactly the plain one (no blue-noise code in it).
+template <uint32_t Arity, bool Blue>
 inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out,
                              const CrossPixelStrata* blue) {
   const uint32_t mask = (1u << grid.pointBits) - 1u;
@@ -90,7 +91,7 @@ inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, u
     // < 2^24, so the signed conversion is exact.
     return static_cast<float>(static_cast<int32_t>(topBits | (jitter >> (8 + axisBits)))) * 0x1p-24f;
   };
-  if (blue) [[unlikely]] {
+  if constexpr (Blue) {
     uint32_t jitter[3] = {static_cast<uint32_t>(bits >> 32), static_cast<uint32_t>(bits), 0};
     uint32_t cell[3] = {0, 0, 0};
     for (uint32_t c = 0; c < Arity; ++c) cell[c] = top[c] >> (24 - grid.axisBits[c]);
@@ -112,7 +113,13 @@ inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, u
 template <uint32_t Arity>
 void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue) {
-  for (uint32_t i = 0; i < count; ++i) progressivePoint<Arity>(set, grid, first + i, out + size_t(i) * Arity, blue);
+  if (blue) {
+    for (uint32_t i = 0; i < count; ++i)
+      progressivePoint<Arity, true>(set, grid, first + i, out + size_t(i) * Arity, blue);
+    return;
+  }
+  for (uint32_t i = 0; i < count; ++i)
+    progressivePoint<Arity, false>(set, grid, first + i, out + size_t(i) * Arity, nullptr);
 }
 
 // ---- other grids ---------------------------------------------------------------------------------------------
@@ -162,10 +169,17 @@ void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
   const StratifiedSet set(key, dim.grid);
   if (!dim.grid.progressive) return permutedPoint(set, dim.grid, p, out, blue);
+  if (blue) {
+    switch (dim.arity) {
+      case 1: return progressivePoint<1, true>(set, dim.grid, p, out, blue);
+      case 2: return progressivePoint<2, true>(set, dim.grid, p, out, blue);
+      default: return progressivePoint<3, true>(set, dim.grid, p, out, blue);
+    }
+  }
   switch (dim.arity) {
-    case 1: return progressivePoint<1>(set, dim.grid, p, out, blue);
-    case 2: return progressivePoint<2>(set, dim.grid, p, out, blue);
-    default: return progressivePoint<3>(set, dim.grid, p, out, blue);
+    case 1: return progressivePoint<1, false>(set, dim.grid, p, out, nullptr);
+    case 2: return progressivePoint<2, false>(set, dim.grid, p, out, nullptr);
+    default: return progressivePoint<3, false>(set, dim.grid, p, out, nullptr);
   }
 }
 
