@@ -64,7 +64,7 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
 
 // Blue is a template parameter so that the flagless loop is exactly the plain one (no blue-noise code in it).
 template <uint32_t Arity, bool Blue>
-inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out,
+[[gnu::always_inline]] inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out,
                              const CrossPixelStrata* blue) {
   const uint32_t mask = (1u << grid.pointBits) - 1u;
   // Index shuffle (top-down nested scramble of p), then value scramble (bottom-up: a coarse cell's sub-cell is a
