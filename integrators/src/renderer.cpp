@@ -193,7 +193,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
         ctx.height = r.height;
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
-                sampler.fillPixel(uint32_t(x), uint32_t(y), samples);
+                sampler.startPixel(uint32_t(x), uint32_t(y), samples);
                 for (uint32_t i = 0; i < r.spp; ++i) {
                     SampleView sv(samples, i);
                     Point2 u = sv.get2D(dimPixel);

@@ -40,7 +40,7 @@ struct Fixture {
         std::vector<PathVertex> cam, light;
         for (int y = 2; y < 24; y += 5)
             for (int x = 1; x < 24; x += 5) {
-                sampler.fillPixel(uint32_t(x), uint32_t(y), ps);
+                sampler.startPixel(uint32_t(x), uint32_t(y), ps);
                 for (uint32_t i = 0; i < spp; ++i) {
                     SampleView sv(ps, i);
                     Point2 u = sv.get2D(0);

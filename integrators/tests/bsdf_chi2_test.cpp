@@ -55,7 +55,7 @@ double chi2PValue(const Config& c, const ShimLibrary& shim, uint32_t configIndex
     PixelSamples buf(sampler);
     double total = 0;
     for (uint32_t px = 0; px < kPixels; ++px) {
-        sampler.fillPixel(px, configIndex, buf);
+        sampler.startPixel(px, configIndex, buf);
         for (uint32_t i = 0; i < kSamplesPerPixel; ++i) {
             SampleView sv(buf, i);
             total += 1;

@@ -8,7 +8,7 @@ build="$1" consumer="$2" cc="$3"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --component stipple --prefix "$work/prefix" > "$work/install.log"
-for f in include/stipple/stipple.h lib/libstipple.so.1 lib/libstipple.so lib/cmake/stipple/stippleConfig.cmake \
+for f in include/stipple/stipple.h include/stipple/stipple.hpp lib/libstipple.so.1 lib/libstipple.so lib/cmake/stipple/stippleConfig.cmake \
          lib/pkgconfig/stipple.pc; do
   [ -e "$work/prefix/$f" ] || { echo "FAIL: $f not installed"; cat "$work/install.log"; exit 1; }
 done

@@ -1,18 +1,54 @@
-// shim_bench.cpp — samples/s of the batch call (stipple_sampler_fill_pixel) per pattern x arity x N.
+// shim_bench.cpp — values/s of every sampling call per pattern x arity x N (one value = one point of `arity` floats).
 //
-// BM_FillPixel/<pattern>/<arity>/<N>: one call per iteration, each for the next pixel; items = N samples.
+// BM_FillPixel/<pattern>/<arity>/<N>: the batch call, one call per iteration, each for the next pixel; items = N.
+// BM_Sample: random access (stipple_sampler_sample), N calls per iteration, one per sample index of one pixel.
+// BM_Stream: the streaming call (stipple_sampler_stream, no declared layout), N calls per iteration in the order a
+//   call-order host makes them: for each sample index, dimension indices 0..7 (8 values, so items = 8 N).
+// BM_StreamFill: the streaming batch call (stipple_sampler_stream_fill), N samples of one stream per call.
+// shim/bench/ratios.py turns one run's JSON into per-value cost ratios against independent.
 // For poisson the cache of the (arity, N) family is warmed before the timed loop; that warm-up (generating every
 // set of the family) is measured apart by BM_PoissonWarmup/<arity>/<N> on a fresh family.
 // Links the internal objects only to reach the cache for warming; sampling goes through the C API.
 #include <stipple/stipple.h>
 
+#include "pmj02_family.h"
 #include "poisson_cache.h"
 
 #include <benchmark/benchmark.h>
 
+#include <bit>
 #include <vector>
 
 namespace {
+
+// Generates the cached sets a pattern serves from (poisson sets, pmj02 sequences) before timing.
+void warmPoisson(uint32_t pattern, uint32_t arity, uint32_t n) {
+    if (pattern == STIPPLE_PATTERN_PMJ02) {
+        auto family = stipple::Pmj02Family::acquire(static_cast<uint32_t>(std::bit_width(n - 1)));
+        for (uint32_t j = 0; j < family->setCount(); ++j) family->sequence(j);
+        return;
+    }
+    if (pattern != STIPPLE_PATTERN_POISSON) return;
+    auto family = stipple::PoissonCache::global().acquire(arity, n);
+    for (uint32_t j = 0; j < family->setCount(); ++j) family->set(j);
+}
+
+void label(benchmark::State& state, uint32_t pattern) {
+    const char* name = "?";
+    stipple_pattern_name(pattern, &name);
+    state.SetLabel(name);
+}
+
+stipple_sampler makeStreamSampler(uint32_t pattern, uint32_t n) {
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.pattern = pattern;
+    desc.samples_per_pixel = n;
+    desc.dimension_count = 0;
+    desc.seed = 7;
+    stipple_sampler s = nullptr;
+    return stipple_sampler_create(&desc, &s) == STIPPLE_OK ? s : nullptr;
+}
 
 stipple_sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
     stipple_dimension_desc dim{};
@@ -39,10 +75,7 @@ void BM_FillPixel(benchmark::State& state) {
         state.SkipWithError(stipple_last_error_message());
         return;
     }
-    if (pattern == STIPPLE_PATTERN_POISSON) {
-        auto family = stipple::PoissonCache::global().acquire(arity, n);
-        for (uint32_t j = 0; j < family->setCount(); ++j) family->set(j);
-    }
+    warmPoisson(pattern, arity, n);
     std::vector<float> out(size_t(n) * arity);
     uint32_t pixel = 0;
     for (auto _ : state) {
@@ -58,6 +91,69 @@ void BM_FillPixel(benchmark::State& state) {
     const char* name = "?";
     stipple_pattern_name(pattern, &name);
     state.SetLabel(name);
+    stipple_sampler_release(s);
+}
+
+void BM_Sample(benchmark::State& state) {
+    const auto pattern = static_cast<uint32_t>(state.range(0));
+    const auto arity = static_cast<uint32_t>(state.range(1));
+    const auto n = static_cast<uint32_t>(state.range(2));
+    stipple_sampler s = makeSampler(pattern, arity, n);
+    if (!s) return state.SkipWithError(stipple_last_error_message());
+    warmPoisson(pattern, arity, n);
+    float out[3];
+    uint32_t pixel = 0;
+    for (auto _ : state) {
+        for (uint32_t i = 0; i < n; ++i) {
+            stipple_sampler_sample(s, pixel % 1024, pixel / 1024, i, 0, out, 3);
+            benchmark::DoNotOptimize(out);
+        }
+        ++pixel;
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+    label(state, pattern);
+    stipple_sampler_release(s);
+}
+
+void BM_Stream(benchmark::State& state) {
+    const auto pattern = static_cast<uint32_t>(state.range(0));
+    const auto arity = static_cast<uint32_t>(state.range(1));
+    const auto n = static_cast<uint32_t>(state.range(2));
+    stipple_sampler s = makeStreamSampler(pattern, n);
+    if (!s) return state.SkipWithError(stipple_last_error_message());
+    warmPoisson(pattern, arity, n);
+    float out[3];
+    uint32_t pixel = 0;
+    for (auto _ : state) {
+        for (uint32_t i = 0; i < n; ++i)
+            for (uint32_t d = 0; d < 8; ++d) {
+                stipple_sampler_stream(s, pixel % 1024, pixel / 1024, i, d, arity, out, 3);
+                benchmark::DoNotOptimize(out);
+            }
+        ++pixel;
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n * 8);
+    label(state, pattern);
+    stipple_sampler_release(s);
+}
+
+void BM_StreamFill(benchmark::State& state) {
+    const auto pattern = static_cast<uint32_t>(state.range(0));
+    const auto arity = static_cast<uint32_t>(state.range(1));
+    const auto n = static_cast<uint32_t>(state.range(2));
+    stipple_sampler s = makeStreamSampler(pattern, n);
+    if (!s) return state.SkipWithError(stipple_last_error_message());
+    warmPoisson(pattern, arity, n);
+    std::vector<float> out(size_t(n) * arity);
+    uint32_t pixel = 0;
+    for (auto _ : state) {
+        stipple_sampler_stream_fill(s, pixel % 1024, pixel / 1024, 0, n, 0, arity, out.data(), out.size());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+        ++pixel;
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+    label(state, pattern);
     stipple_sampler_release(s);
 }
 
@@ -79,9 +175,20 @@ void fillArguments(benchmark::internal::Benchmark* b) {
             for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});
 }
 
+// Per-value calls: poisson-seed generates its whole set on every call by design, so it is left out here.
+void accessArguments(benchmark::internal::Benchmark* b) {
+    for (int64_t pattern = 0; pattern < STIPPLE_PATTERN_COUNT; ++pattern)
+        if (pattern != STIPPLE_PATTERN_POISSON_SEED)
+            for (int64_t arity = 1; arity <= 3; ++arity)
+                for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});
+}
+
 } // namespace
 
 BENCHMARK(BM_FillPixel)->ArgNames({"pattern", "arity", "N"})->Apply(fillArguments)->MinTime(0.2);
+BENCHMARK(BM_Sample)->ArgNames({"pattern", "arity", "N"})->Apply(accessArguments)->MinTime(0.2);
+BENCHMARK(BM_Stream)->ArgNames({"pattern", "arity", "N"})->Apply(accessArguments)->MinTime(0.2);
+BENCHMARK(BM_StreamFill)->ArgNames({"pattern", "arity", "N"})->Apply(accessArguments)->MinTime(0.2);
 BENCHMARK(BM_PoissonWarmup)
     ->ArgNames({"arity", "N"})
     ->ArgsProduct({{1, 2, 3}, {16, 256, 4096}})

@@ -7,7 +7,10 @@ add_test(NAME shim.header_c99
 add_test(NAME shim.header_cxx
   COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -x c++ -pedantic -Wall -Wextra -Werror -fsyntax-only
           -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_c99.c)
-set_tests_properties(shim.header_c99 shim.header_cxx PROPERTIES LABELS unit)
+add_test(NAME shim.header_hpp
+  COMMAND ${CMAKE_CXX_COMPILER} -std=c++17 -pedantic -Wall -Wextra -Werror -fsyntax-only
+          -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_hpp.cpp)
+set_tests_properties(shim.header_c99 shim.header_cxx shim.header_hpp PROPERTIES LABELS unit)
 add_library(stipple_header_c99 OBJECT tests/header_c99.c)
 set_target_properties(stipple_header_c99 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
 target_compile_options(stipple_header_c99 PRIVATE -pedantic -Wall -Wextra -Werror)
@@ -47,5 +50,45 @@ if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
     add_test(NAME shim.quarter_disk_py
       COMMAND ${STIPPLE_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/examples/quarter_disk.py $<TARGET_FILE:stipple>)
     set_tests_properties(shim.quarter_disk_py PROPERTIES LABELS "statistical")
+  endif()
+endif()
+
+# 1.0 compatibility: abidiff against the 1.0 baseline (kept in abi/1.0/) reports additions only, and the C example
+# host built against the 1.0 header (abi/1.0/stipple/stipple.h, the released header unmodified) runs against this
+# library through dlopen.
+if(STIPPLE_ABIDIFF)
+  add_test(NAME shim.abi_since_1_0 COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-abi.sh $<TARGET_FILE:stipple>
+                                           shim/abi/1.0/libstipple.abi)
+  set_tests_properties(shim.abi_since_1_0 PROPERTIES LABELS unit)
+endif()
+add_executable(quarter_disk_abi_1_0 examples/quarter_disk.c)
+set_target_properties(quarter_disk_abi_1_0 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+target_compile_options(quarter_disk_abi_1_0 PRIVATE -pedantic -Wall -Wextra -Werror)
+target_include_directories(quarter_disk_abi_1_0 PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/abi/1.0)
+target_link_libraries(quarter_disk_abi_1_0 PRIVATE ${CMAKE_DL_LIBS} m)
+add_dependencies(quarter_disk_abi_1_0 stipple)
+add_test(NAME shim.host_abi_1_0 COMMAND quarter_disk_abi_1_0 $<TARGET_FILE:stipple>)
+set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")
+
+# The stipple.hpp host: unbiased against the closed form with indices past N, progressive passes equal one pass,
+# stratified per call index with data-dependent skipped calls (see the source).
+add_test(NAME shim.tiny_path_tracer COMMAND tiny_path_tracer)
+set_tests_properties(shim.tiny_path_tracer PROPERTIES LABELS "statistical")
+
+# The importable NumPy binding (examples/python/stipple_numpy.py) and its test; needs Debian's python3-numpy
+# (hence /usr/bin first), and no sanitizer build (an uninstrumented python3 cannot load it).
+if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+  find_program(STIPPLE_NUMPY_PYTHON3 NAMES python3 HINTS /usr/bin)
+  if(STIPPLE_NUMPY_PYTHON3)
+    execute_process(COMMAND ${STIPPLE_NUMPY_PYTHON3} -c "import numpy" RESULT_VARIABLE _stipple_no_numpy
+                    OUTPUT_QUIET ERROR_QUIET)
+    if(_stipple_no_numpy EQUAL 0)
+      add_test(NAME shim.stipple_numpy
+        COMMAND ${STIPPLE_NUMPY_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/examples/python/test_stipple_numpy.py
+                $<TARGET_FILE:stipple>)
+      set_tests_properties(shim.stipple_numpy PROPERTIES LABELS "unit;statistical")
+    else()
+      message(WARNING "python3 without numpy (python3-numpy): the shim.stipple_numpy test is not registered")
+    endif()
   endif()
 endif()

@@ -149,6 +149,24 @@ void create(FuzzInput& in, std::vector<Live>& live) {
     live.push_back({sampler, desc.pattern, desc.samples_per_pixel, desc.dimension_count});
 }
 
+// Streams (1.1): any dimension index and sample index; arity 1..3 and out_count >= arity, else a clean error.
+void serveStream(FuzzInput& in, const Live& live, uint32_t dimension, uint32_t x, uint32_t y) {
+    const uint32_t points = live.samplesPerPixel;
+    if ((live.pattern == STIPPLE_PATTERN_POISSON && points > 4096) ||
+        (live.pattern == STIPPLE_PATTERN_POISSON_SEED && points > 512))
+        return;
+    const uint32_t arity = in.byte() % 5;
+    const uint32_t i = (in.byte() & 1) ? in.u32() : in.byte();
+    const size_t capacity = in.byte() % 5;
+    float out[5] = {-1.0f, -1.0f, -1.0f, -1.0f, -1.0f};
+    const stipple_status status = stipple_sampler_stream(live.sampler, x, y, i, dimension, arity, out, capacity);
+    checkFailureHasMessage(status);
+    require((status == STIPPLE_OK) == (arity >= 1 && arity <= 3 && capacity >= arity));
+    if (status != STIPPLE_OK) return;
+    checkValues(out, arity);
+    for (size_t j = arity; j < 5; ++j) require(out[j] == -1.0f);
+}
+
 void serve(FuzzInput& in, const Live& live, bool batch) {
     const uint32_t dimension = (in.byte() & 0x80) ? in.u32() : in.byte() % (live.dimensionCount + 1);
     const uint32_t x = (in.byte() & 1) ? in.u32() : in.byte(), y = (in.byte() & 1) ? in.u32() : in.byte();
@@ -160,6 +178,7 @@ void serve(FuzzInput& in, const Live& live, bool batch) {
     if (infoStatus != STIPPLE_OK) {
         float scratch[4];
         require(stipple_sampler_fill_pixel(live.sampler, x, y, dimension, scratch, 4) == STIPPLE_ERROR_OUT_OF_RANGE);
+        serveStream(in, live, dimension, x, y);
         return;
     }
     require(info.floats_per_pixel == uint64_t(live.samplesPerPixel) * info.count * info.arity);
@@ -187,7 +206,7 @@ void serve(FuzzInput& in, const Live& live, bool batch) {
         std::vector<float> out(capacity + 1, -1.0f);
         const stipple_status status = stipple_sampler_sample(live.sampler, x, y, i, dimension, out.data(), capacity);
         checkFailureHasMessage(status);
-        require((status == STIPPLE_OK) == (!shortBuffer && i < live.samplesPerPixel));
+        require((status == STIPPLE_OK) == !shortBuffer); // any sample index is served (1.1)
         if (status == STIPPLE_OK) {
             checkValues(out.data(), perSample);
             for (size_t j = perSample; j <= capacity; ++j) require(out[j] == -1.0f);

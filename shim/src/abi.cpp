@@ -26,11 +26,20 @@ const stipple::Sampler& checkedSampler(stipple_sampler sampler) {
 }
 
 void checkDimension(const stipple::Sampler& sampler, uint32_t dimension) {
+    if (sampler.dimensionCount() == 0)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    "dimension is " + std::to_string(dimension) +
+                        "; this sampler declares no layout (dimension_count 0): use stipple_sampler_stream");
     if (dimension >= sampler.dimensionCount())
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
                     "dimension is " + std::to_string(dimension) + "; expected 0.." +
                         std::to_string(sampler.dimensionCount() - 1) +
                         " (the declared layout; past it use stipple_sampler_sample_independent)");
+}
+
+void checkArity(uint32_t arity) {
+    if (arity < 1 || arity > 3)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "arity is " + std::to_string(arity) + "; expected 1, 2 or 3");
 }
 
 void checkCapacity(size_t outCount, size_t needed) {
@@ -172,9 +181,6 @@ STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint3
     return callGuarded(__func__, [&] {
         const stipple::Sampler& s = checkedSampler(sampler);
         checkDimension(s, dimension);
-        if (sample_index >= s.samplesPerPixel())
-            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_index is " + std::to_string(sample_index) +
-                                                        "; expected 0.." + std::to_string(s.samplesPerPixel() - 1));
         requireNonNull(out, "out");
         checkCapacity(out_count, s.dimension(dimension).floatsPerSample());
         s.sample(pixel_x, pixel_y, sample_index, dimension, out);
@@ -189,6 +195,35 @@ STIPPLE_API stipple_status stipple_sampler_sample_independent(stipple_sampler sa
         requireNonNull(out, "out");
         if (out_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "out_count is 0; expected at least 1");
         s.sampleIndependent(pixel_x, pixel_y, sample_index, stream, out, out_count);
+    });
+}
+
+STIPPLE_API stipple_status stipple_sampler_stream(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                  uint32_t sample_index, uint32_t dimension, uint32_t arity, float* out,
+                                                  size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkArity(arity);
+        requireNonNull(out, "out");
+        checkCapacity(out_count, arity);
+        s.stream(pixel_x, pixel_y, sample_index, dimension, arity, out);
+    });
+}
+
+STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                       uint32_t first_sample, uint32_t sample_count, uint32_t dimension,
+                                                       uint32_t arity, float* out, size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkArity(arity);
+        if (sample_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
+        if (uint64_t(first_sample) + sample_count > (uint64_t(1) << 32))
+            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is " +
+                                                        std::to_string(uint64_t(first_sample) + sample_count) +
+                                                        "; expected at most 2^32 (sample indices are uint32)");
+        requireNonNull(out, "out");
+        checkCapacity(out_count, size_t(sample_count) * arity);
+        s.streamFill(pixel_x, pixel_y, first_sample, sample_count, dimension, arity, out);
     });
 }
 
@@ -210,6 +245,8 @@ STIPPLE_API stipple_status stipple_get_api(uint32_t abi_major, const stipple_api
         &stipple_sampler_fill_pixel,
         &stipple_sampler_sample,
         &stipple_sampler_sample_independent,
+        &stipple_sampler_stream,
+        &stipple_sampler_stream_fill,
     };
     return callGuarded(__func__, [&] {
         requireNonNull(out_api, "out_api");

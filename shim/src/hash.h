@@ -39,10 +39,14 @@ enum class HashDomain : uint64_t {
     BlueNoiseTile = 0xb1e7111ec0ffee0bull, // XORed onto a pattern's domain for the keys of blue-noise tiles
 };
 
-// Key of one (pixel, dimension) set for one pattern domain.
+// Key of one (pixel, dimension) set for one pattern domain. seedKey(seed, domain) is constant per sampler (a
+// sampler keeps it; the per-value path then starts from it).
+constexpr uint64_t seedKey(uint64_t seed, HashDomain domain) { return mix64(seed ^ static_cast<uint64_t>(domain)); }
+constexpr uint64_t setKeyFrom(uint64_t seedKey, uint32_t pixelX, uint32_t pixelY, uint32_t dimension) {
+    return hashCombine(hashCombine(seedKey, (uint64_t(pixelY) << 32) | pixelX), dimension);
+}
 constexpr uint64_t setKey(uint64_t seed, HashDomain domain, uint32_t pixelX, uint32_t pixelY, uint32_t dimension) {
-    uint64_t key = hashCombine(mix64(seed ^ static_cast<uint64_t>(domain)), (uint64_t(pixelY) << 32) | pixelX);
-    return hashCombine(key, dimension);
+    return setKeyFrom(seedKey(seed, domain), pixelX, pixelY, dimension);
 }
 
 // A float in [0, 1) from the top 24 bits: every value is an exact multiple of 2^-24, so 1.0 cannot occur.

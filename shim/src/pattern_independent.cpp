@@ -19,13 +19,15 @@ void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out
     for (uint32_t c = 0; c < dim.arity; ++c) out[c] = static_cast<float>(bits[c] >> 8) * 0x1p-24f;
 }
 
-void fillIndependent(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue) {
+void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                     const CrossPixelStrata* blue) {
     if (!blue) {
-        const uint64_t n = uint64_t(dim.setSize) * dim.arity;
-        for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, i));
+        const uint64_t begin = uint64_t(first) * dim.arity;
+        const uint64_t n = uint64_t(count) * dim.arity;
+        for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, begin + i));
         return;
     }
-    for (uint32_t p = 0; p < dim.setSize; ++p) pointIndependent(key, dim, p, out + size_t(p) * dim.arity, blue);
+    for (uint32_t i = 0; i < count; ++i) pointIndependent(key, dim, first + i, out + size_t(i) * dim.arity, blue);
 }
 
 } // namespace stipple

@@ -9,7 +9,8 @@
 //   drew the same sequence still pair their points differently;
 // - Owen scrambling of every coordinate, which maps elementary intervals onto elementary intervals (the nets
 //   stay nets) and makes every point uniformly distributed.
-// Points past the set (p >= M) take block b = p / M: the first M points of a set randomised from (key, b).
+// Sample indices past the set (block b = i / N > 0) take the first M points of a set randomised from the block's
+// key hashCombine(set key, b) (the sampler computes it; block 0 is hashCombine(set key, 0)).
 #include "owen_scrambling.h"
 #include "patterns.h"
 
@@ -56,16 +57,15 @@ inline void pmj02Point(const Pmj02Set& set, const Pmj02Family& family, uint32_t 
 
 } // namespace
 
-void fillPmj02(uint64_t key, const Dimension& dim, float* out) {
+void fillPmj02(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     const Pmj02Family& family = *dim.pmj02;
-    const Pmj02Set set(hashCombine(key, 0), family);
-    for (uint32_t p = 0; p < dim.setSize; ++p) pmj02Point(set, family, dim.arity, p, out + size_t(p) * dim.arity);
+    const Pmj02Set set(key, family);
+    for (uint32_t i = 0; i < count; ++i) pmj02Point(set, family, dim.arity, first + i, out + size_t(i) * dim.arity);
 }
 
 void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
     const Pmj02Family& family = *dim.pmj02;
-    const uint32_t b = p / dim.setSize;
-    pmj02Point(Pmj02Set(hashCombine(key, b), family), family, dim.arity, p - b * dim.setSize, out);
+    pmj02Point(Pmj02Set(key, family), family, dim.arity, p, out);
 }
 
 } // namespace stipple

@@ -1,15 +1,22 @@
 // pattern_poisson.cpp — serving Poisson-disk sets: "poisson" from the cache, "poisson-seed" generated fresh.
 //
-// A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections),
-// a Cranley-Patterson shift and a permutation of sample order, all hashed from the set key. These maps are
-// isometries of the torus, so they keep the set's minimum distance (rho); the shift makes every sample uniformly
-// distributed over [0,1)^arity whatever the stored set is.
+// A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections) and
+// a Cranley-Patterson shift, hashed from the set key. These maps are isometries of the torus, so they keep the
+// set's minimum distance (rho); the shift makes every sample uniformly distributed over [0,1)^arity whatever the
+// stored set is.
+// Order: "poisson" serves the stored order (made progressive by the cache, progressive_order.h) shuffled only
+// within each layer [2^j, 2^(j+1)) (layeredIndex). Every prefix of 2^j points is thus
+// exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
+// dimensions that drew the same stored set and symmetry from pairing their samples point for point.
+// "poisson-seed" serves its fresh set in a hashed random order.
 #include "error.h"
 #include "hash.h"
 #include "patterns.h"
 #include "permutation.h"
 #include "pointsets/pointsets.h"
 
+#include <algorithm>
+#include <bit>
 #include <string>
 #include <vector>
 
@@ -19,47 +26,107 @@ namespace {
 
 constexpr uint8_t kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
+// v in (-1, 2) wrapped into [0, 1) without a data-dependent branch (the wrap is a coin flip per value: a branch
+// is mispredicted half the time, which compilers emit for a conditional subtract). r = v - trunc(v) is exact and
+// in (-1, 1); a negative r (its sign bit) gets 1.0 added through integer masks. That sum may round up to 1.0 (as
+// may -0.0 + 1): the last step maps it to 0, a select that is practically never taken.
+inline float wrapUnit(float v) {
+    float r = v - static_cast<float>(static_cast<int32_t>(v));
+    const uint32_t negative = std::bit_cast<uint32_t>(r) >> 31;
+    r += std::bit_cast<float>((0u - negative) & 0x3f800000u);
+    return r < 1.0f ? r : 0.0f;
+}
+
 struct TorusMap {
     uint32_t orderSeed;
-    uint8_t source[3] = {0, 1, 2}; // output axis c reads stored axis source[c]
-    bool reflect[3] = {false, false, false};
+    uint8_t source[3] = {0, 1, 2};      // output axis c reads stored axis source[c]
+    float sign[3] = {1.0f, 1.0f, 1.0f}; // -1: reflected axis
     float shift[3];
 
-    TorusMap(uint64_t key, uint32_t arity, bool useSymmetry) : orderSeed(static_cast<uint32_t>(hashAt(key, 1) >> 32)) {
-        for (uint32_t c = 0; c < 3; ++c) shift[c] = unitFloat(hashAt(key, 3 + c));
-        if (!useSymmetry) return;
+    // One hash gives the three shifts (21 bits each: multiples of 2^-21), one the symmetry (axis order from its
+    // value mod 6, reflections from bits 32..34) and the order seed (bits 35..63).
+    TorusMap(uint64_t key, uint32_t arity, bool useSymmetry) {
+        const uint64_t shifts = hashAt(key, 3);
+        for (uint32_t c = 0; c < 3; ++c) shift[c] = float((shifts >> (43 - 21 * c)) & 0x1fffffu) * 0x1p-21f;
         const uint64_t symmetry = hashAt(key, 2);
+        orderSeed = static_cast<uint32_t>(symmetry >> 35);
+        if (!useSymmetry) return;
         const uint32_t axisOrder = arity == 3 ? uint32_t(symmetry % 6) : arity == 2 ? uint32_t(symmetry % 2) * 2 : 0;
         for (uint32_t c = 0; c < 3; ++c) {
             source[c] = kAxisOrders[axisOrder][c];
-            reflect[c] = (symmetry >> (32 + c)) & 1;
+            sign[c] = (symmetry >> (32 + c)) & 1 ? -1.0f : 1.0f;
         }
     }
 
-    // s + x or s - x, wrapped into [0,1) without branches (the wrap is a coin flip per value: a branch would be
-    // mispredicted half the time). s - x in (-1, 1) plus 1 may round up to 1.0, which the second step maps to 0;
-    // s + x in [1, 2) minus 1 is exact.
+    // s + x or s - x, wrapped into [0,1) by wrapUnit.
+    template <uint32_t Arity>
+    void apply(const float* stored, float* out) const {
+        for (uint32_t c = 0; c < Arity; ++c) {
+            out[c] = wrapUnit(shift[c] + sign[c] * stored[source[c]]);
+        }
+    }
     void apply(const float* stored, uint32_t arity, float* out) const {
-        for (uint32_t c = 0; c < arity; ++c) {
-            const float x = stored[source[c]];
-            float v = shift[c] + (reflect[c] ? -x : x);
-            v += float(v < 0.0f);
-            v -= float(v >= 1.0f);
-            out[c] = v;
+        switch (arity) {
+        case 1: return apply<1>(stored, out);
+        case 2: return apply<2>(stored, out);
+        default: return apply<3>(stored, out);
         }
     }
 };
 
-void serve(const TorusMap& map, const Dimension& dim, const float* stored, float* out) {
-    for (uint32_t p = 0; p < dim.setSize; ++p) {
-        const uint32_t q = permuteIndex(p, dim.setSize, map.orderSeed);
-        map.apply(stored + size_t(q) * dim.arity, dim.arity, out + size_t(p) * dim.arity);
+// Position p of the served order -> stored point: p's layer [2^j, 2^(j+1)) is shuffled by XOR with the seed's low
+// j bits (a bijection of a full layer, cheap on the per-value path); a last layer clipped by M (M not a power
+// of two) by a hashed permutation.
+inline uint32_t layeredIndex(uint32_t p, uint32_t points, uint32_t seed) {
+    if (p < 2) return p;
+    const uint32_t base = std::bit_floor(p);
+    if (points - base >= base) return base + ((p - base) ^ (seed & (base - 1)));
+    return base + permuteIndexFast(p - base, points - base, seed ^ base);
+}
+
+// The batch: layer by layer, with the map's constants in locals (out may alias nothing the compiler can see).
+template <uint32_t Arity>
+void serveLayered(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count,
+                  float* out) {
+    float shift[Arity], sign[Arity];
+    uint32_t source[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) shift[c] = map.shift[c], sign[c] = map.sign[c], source[c] = map.source[c];
+    const uint32_t end = first + count;
+    uint32_t p = first;
+    while (p < end) {
+        const uint32_t base = p < 2 ? 0 : std::bit_floor(p);
+        const uint32_t layerEnd = std::min(end, p < 2 ? 2u : 2 * base);
+        if (p >= 2 && points - base < base) { // a clipped last layer
+            for (; p < layerEnd; ++p)
+                map.apply<Arity>(stored + size_t(layeredIndex(p, points, map.orderSeed)) * Arity,
+                                 out + size_t(p - first) * Arity);
+            continue;
+        }
+        const uint32_t mask = p < 2 ? 0 : (map.orderSeed & (base - 1));
+        if (p == base && layerEnd == 2 * base && base >= 2) {
+            // A whole layer: XOR is an involution, so walk the stored points in memory order (the family's sets do not
+            // stay in cache between pixels) and scatter them to their served positions.
+            for (uint32_t j = 0; j < base; ++j) {
+                const float* x = stored + size_t(base + j) * Arity;
+                float* o = out + size_t(base + (j ^ mask) - first) * Arity;
+                for (uint32_t c = 0; c < Arity; ++c) o[c] = wrapUnit(shift[c] + sign[c] * x[source[c]]);
+            }
+            p = layerEnd;
+            continue;
+        }
+        for (; p < layerEnd; ++p) {
+            const float* x = stored + size_t(base + ((p - base) ^ mask)) * Arity;
+            float* o = out + size_t(p - first) * Arity;
+            for (uint32_t c = 0; c < Arity; ++c) {
+                o[c] = wrapUnit(shift[c] + sign[c] * x[source[c]]);
+            }
+        }
     }
 }
 
 const float* cachedSet(uint64_t key, const Dimension& dim) {
     const PoissonFamily& family = *dim.poisson;
-    return family.set(static_cast<uint32_t>(hashAt(key, 0) % family.setCount()));
+    return family.set(poissonSetIndex(key, family.setCount()));
 }
 
 // A fresh set per call: allocating here is part of the cost the study paid.
@@ -73,19 +140,32 @@ std::vector<float> freshSeedSet(uint64_t key, const Dimension& dim) {
 
 } // namespace
 
-void fillPoisson(uint64_t key, const Dimension& dim, float* out) {
-    serve(TorusMap(key, dim.arity, true), dim, cachedSet(key, dim), out);
+void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    const TorusMap map(key, dim.arity, true);
+    const float* stored = cachedSet(key, dim);
+    switch (dim.arity) {
+    case 1: return serveLayered<1>(map, stored, dim.setSize, first, count, out);
+    case 2: return serveLayered<2>(map, stored, dim.setSize, first, count, out);
+    default: return serveLayered<3>(map, stored, dim.setSize, first, count, out);
+    }
 }
 
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
     const TorusMap map(key, dim.arity, true);
-    const uint32_t q = permuteIndex(p, dim.setSize, map.orderSeed);
-    map.apply(cachedSet(key, dim) + size_t(q) * dim.arity, dim.arity, out);
+    map.apply(cachedSet(key, dim) + size_t(layeredIndex(p, dim.setSize, map.orderSeed)) * dim.arity, dim.arity, out);
 }
 
-void fillPoissonSeed(uint64_t key, const Dimension& dim, float* out) {
+void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     const std::vector<float> set = freshSeedSet(key, dim);
-    serve(TorusMap(key, dim.arity, false), dim, set.data(), out);
+    const TorusMap map(key, dim.arity, false);
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint32_t q = permuteIndex(first + i, dim.setSize, map.orderSeed);
+        map.apply(set.data() + size_t(q) * dim.arity, dim.arity, out + size_t(i) * dim.arity);
+    }
+}
+
+void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
+    fillPoissonSeed(key, dim, p, 1, out);
 }
 
 } // namespace stipple

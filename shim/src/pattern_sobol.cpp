@@ -1,8 +1,9 @@
 // pattern_sobol.cpp — Owen-scrambled Sobol' points (Burley 2020), padded per (pixel, dimension).
 //
-// The set of one (pixel, dimension) is M = k*N points of the first `arity` Sobol' dimensions. Let L = 2^m be
-// the smallest power of two >= M. Point p lies in block b = p / M at position r = p % M; its Sobol' index is
-//     (block(b) << m) | (nestedUniformScramble(r, indexSeed) mod L),
+// The set of one (pixel, dimension) is M points of the first `arity` Sobol' dimensions (M = k*N for a declared
+// dimension, N for a stream). Let L = 2^m be the smallest power of two >= M. Sample index i lies in block
+// b = i / N (the sampler passes SobolSet::atBlock(b)); point r of that block has the Sobol' index
+//     (block(b) << m) | (nestedUniformScramble(r, indexSeed) mod L),   block(b) = blockBase + b * blockStride,
 // where the index shuffle (an Owen scramble of r's binary digits) maps every prefix [0, 2^j) of r onto an
 // aligned run of 2^j Sobol' indices, i.e. a (0,j,2)-net in 2D. Each coordinate is then Owen-scrambled with its
 // own seed. indexSeed and the scramble seeds are hashed from the set key, so the dimensions of one pixel are
@@ -20,12 +21,10 @@ namespace stipple {
 
 namespace {
 
-inline void sobolPoint(const SobolSet& set, const Dimension& dim, uint32_t p, float* out) {
-    const uint32_t b = p / dim.setSize, r = p - b * dim.setSize;
+inline void sobolPoint(const SobolSet& set, const Dimension& dim, uint32_t r, float* out) {
     const uint32_t lowMask = dim.log2Length == 32 ? ~0u : (1u << dim.log2Length) - 1u;
-    const uint32_t block = set.blockBase + b * set.blockStride;
-    const uint32_t index =
-        (dim.log2Length >= 32 ? 0u : block << dim.log2Length) | (nestedUniformScramble(r, set.indexSeed) & lowMask);
+    const uint32_t index = (dim.log2Length >= 32 ? 0u : set.blockBase << dim.log2Length) |
+                           (nestedUniformScramble(r, set.indexSeed) & lowMask);
     for (uint32_t c = 0; c < dim.arity; ++c)
         out[c] = fixedToUnitFloat(nestedUniformScramble(sobolSample(index, c), set.scramble[c]));
 }
@@ -42,8 +41,8 @@ SobolSet SobolSet::perPixel(uint64_t key) {
     return set;
 }
 
-void fillSobol(const SobolSet& set, const Dimension& dim, float* out) {
-    for (uint32_t p = 0; p < dim.setSize; ++p) sobolPoint(set, dim, p, out + size_t(p) * dim.arity);
+void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    for (uint32_t i = 0; i < count; ++i) sobolPoint(set, dim, first + i, out + size_t(i) * dim.arity);
 }
 
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out) { sobolPoint(set, dim, p, out); }

@@ -1,11 +1,31 @@
 // pattern_stratified.cpp — jittered strata: one sample per used cell of the dimension's StrataGrid.
 //
-// Per (pixel, dimension) the key gives: the permutation of sample order (so sample i of this dimension is not
-// tied to sample i of another), the choice of padded lines and hole offset, and the jitter of every point.
+// Order of the set's points (what a prefix of the set is worth):
+//  - progressive grids (exact, every axis a power of two; M = 2^m): point p sits in the cell whose coordinates,
+//    read as bits interleaved axis by axis (x, y, z, x, ...) from each axis' most significant bit, spell the
+//    bit-reversal of q = V(S(p)):
+//      S, the index shuffle: a nested uniform scramble from the top bit down (bit k of S(p) is bit k of p flipped
+//        by a hash of p's bits above k; reverse(LK(reverse(p))) with the Laine-Karras hash LK, Burley 2020).
+//        p < 2^j gives every value of S(p)'s low j bits, and because a flip depends on the higher bits, two
+//        dimensions pair their coarse cells anew in every pair of samples.
+//      V, the value scramble: LK itself (bit k flipped by a hash of the bits below k), a bijection of the low j
+//        bits for every j: Owen scrambling of the cell tree, so the sub-cell a prefix point takes inside its
+//        coarse cell is random per coarse cell (without it, every point of a prefix would sit in the same corner
+//        of its coarse cell).
+//    Hence every prefix of 2^j points (and every aligned block of 2^j) holds one point in each cell of the coarse
+//    2^j-cell grid of the first j interleaved bits, uniformly placed in it (progressive jittered sampling). Both
+//    seeds come from the (pixel, dimension, block) key.
+//  - other grids (non-power-of-two axes, padded grids): a hashed random permutation of the points (Kensler 2013):
+//    a prefix is a uniformly random subset of the strata.
+// Per (pixel, dimension, block) the key gives the order (rotation or permutation), the padded lines and hole
+// offset, and the jitter of every point.
+// With the blue-noise flag, the jitter of a point is moved into the pixel's sub-cell of its stratum (named by its
+// cell, the same in every pixel; blue_noise.h), so the pixels of a tile stratify each stratum among themselves.
 #include "blue_noise.h"
 #include "hash.h"
 #include "patterns.h"
 #include "permutation.h"
+#include "progressive_strata.h"
 
 #include <bit>
 
@@ -14,13 +34,94 @@ namespace stipple {
 namespace {
 
 struct StratifiedSet {
-    uint32_t orderSeed, lineSeed, holeOffset;
+    uint32_t orderSeed; // index shuffle seed (progressive) or permutation seed
+    uint32_t valueSeed; // progressive: the value scramble's seed
     uint64_t jitterKey;
+    uint32_t lineSeed = 0, holeOffset = 0; // padded grids only
 
     StratifiedSet(uint64_t key, const StrataGrid& grid)
-        : orderSeed(static_cast<uint32_t>(hashAt(key, 0) >> 32)), lineSeed(static_cast<uint32_t>(hashAt(key, 1) >> 32)),
-          holeOffset(static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength)), jitterKey(hashCombine(key, 3)) {}
+        : orderSeed(static_cast<uint32_t>(key >> 32)), valueSeed(static_cast<uint32_t>(key)),
+          jitterKey(key ^ 0x6a09e667f3bcc909ull) {
+        if (!grid.padded()) return;
+        lineSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
+        holeOffset = static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength);
+    }
 };
+
+// ---- progressive grids ---------------------------------------------------------------------------------------
+
+// Burley, "Practical Hash-based Owen Scrambling" (JCGT 2020), the improved Laine-Karras hash: each step only
+// carries information from low bits to high bits, so q mod 2^j is a bijection of p mod 2^j for every j.
+constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
+    x ^= x * 0x3d20adeau;
+    x += seed;
+    x *= (seed >> 16) | 1u;
+    x ^= x * 0x05526c56u;
+    x ^= x * 0x53a22864u;
+    return x;
+}
+
+// Blue is a template parameter so that the flagless loop is exactly the plain one (no blue-noise code in it).
+template <uint32_t Arity, bool Blue>
+[[gnu::always_inline]] inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p,
+                                                    float* out, const CrossPixelStrata* blue) {
+    const uint32_t mask = (1u << grid.pointBits) - 1u;
+    // Index shuffle (top-down nested scramble of p), then value scramble (bottom-up: a coarse cell's sub-cell is a
+    // hash of the coarse bits), then the cell of q from the table.
+    const uint32_t shuffled =
+        grid.pointBits <= 16
+            ? reverseBits16(laineKarras(reverseBits16(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits)
+            : reverseBits(laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits);
+    const uint32_t q = laineKarras(shuffled, set.valueSeed) & mask;
+    // 1D needs only the top 32 bits: one multiply of the keyed counter carries every input bit into them (and a
+    // uniform key makes them uniform); 2D and 3D also use low bits and take the full finaliser.
+    const uint64_t bits =
+        Arity == 1 ? (set.jitterKey ^ (uint64_t(q) * kGolden64)) * 0xd1342543de82ef95ull : hashAt(set.jitterKey, q);
+    uint32_t top[3]; // cell[c] << (24 - axisBits[c])
+    if (grid.cellTable) {
+        const uint32_t* words = grid.cellTable->data() + size_t(q) * Arity;
+        for (uint32_t c = 0; c < Arity; ++c) top[c] = words[c];
+    } else {
+        uint32_t cell[3];
+        progressiveCell(q, Arity, grid.axisBits, cell);
+        for (uint32_t c = 0; c < Arity; ++c) top[c] = cell[c] << (24 - grid.axisBits[c]);
+    }
+    const auto value = [](uint32_t topBits, uint32_t axisBits, uint32_t jitter) {
+        // < 2^24, so the signed conversion is exact.
+        return static_cast<float>(static_cast<int32_t>(topBits | (jitter >> (8 + axisBits)))) * 0x1p-24f;
+    };
+    if constexpr (Blue) {
+        uint32_t jitter[3] = {static_cast<uint32_t>(bits >> 32), static_cast<uint32_t>(bits), 0};
+        uint32_t cell[3] = {0, 0, 0};
+        for (uint32_t c = 0; c < Arity; ++c) cell[c] = top[c] >> (24 - grid.axisBits[c]);
+        if constexpr (Arity == 3)
+            for (uint32_t c = 0; c < 3; ++c) jitter[c] = static_cast<uint32_t>(bits >> (43 - 21 * c)) << 11;
+        blue->place((uint64_t(cell[2]) << 42) ^ (uint64_t(cell[1]) << 21) ^ cell[0], Arity, jitter);
+        for (uint32_t c = 0; c < Arity; ++c) out[c] = value(top[c], grid.axisBits[c], jitter[c]);
+        return;
+    }
+    if constexpr (Arity <= 2) {
+        out[0] = value(top[0], grid.axisBits[0], static_cast<uint32_t>(bits >> 32));
+        if constexpr (Arity == 2) out[1] = value(top[1], grid.axisBits[1], static_cast<uint32_t>(bits));
+    } else {
+        for (uint32_t c = 0; c < 3; ++c)
+            out[c] = value(top[c], grid.axisBits[c], static_cast<uint32_t>(bits >> (43 - 21 * c)) << 11);
+    }
+}
+
+template <uint32_t Arity>
+void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out,
+                     const CrossPixelStrata* blue) {
+    if (blue) {
+        for (uint32_t i = 0; i < count; ++i)
+            progressivePoint<Arity, true>(set, grid, first + i, out + size_t(i) * Arity, blue);
+        return;
+    }
+    for (uint32_t i = 0; i < count; ++i)
+        progressivePoint<Arity, false>(set, grid, first + i, out + size_t(i) * Arity, nullptr);
+}
+
+// ---- other grids ---------------------------------------------------------------------------------------------
 
 // (cell + u) / strata with a 32-bit jitter u, rounded to float, then moved by one ulp if rounding crossed the
 // stratum's border, so floor(value * strata) == cell holds exactly and 1.0 never occurs. Rounding moves the
@@ -35,30 +136,52 @@ inline float jittered(uint32_t cell, uint32_t strata, double inverseStrata, uint
     return value;
 }
 
-inline void stratifiedPoint(const StratifiedSet& set, const Dimension& dim, uint32_t p, float* out,
-                            const CrossPixelStrata* blue) {
-    const StrataGrid& grid = dim.grid;
-    const uint32_t q = permuteIndex(p, dim.setSize, set.orderSeed);
+inline void permutedPoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p, float* out,
+                          const CrossPixelStrata* blue) {
+    const uint32_t q = permuteIndex(p, grid.points, set.orderSeed);
     uint32_t cell[3] = {0, 0, 0};
     grid.cellOf(q, set.lineSeed, set.holeOffset, cell);
     // One 64-bit hash jitters two axes (32 bits each).
     const uint64_t bits01 = hashAt(set.jitterKey, uint64_t(q) * 2);
     uint32_t jitter[3] = {static_cast<uint32_t>(bits01 >> 32), static_cast<uint32_t>(bits01), 0};
-    if (dim.arity == 3) jitter[2] = static_cast<uint32_t>(hashAt(set.jitterKey, uint64_t(q) * 2 + 1) >> 32);
+    if (grid.arity == 3) jitter[2] = static_cast<uint32_t>(hashAt(set.jitterKey, uint64_t(q) * 2 + 1) >> 32);
     // Blue noise: the stratum (named by its cell, the same in every pixel) is shared with the tile's pixels.
-    if (blue) blue->place((uint64_t(cell[2]) << 42) ^ (uint64_t(cell[1]) << 21) ^ cell[0], dim.arity, jitter);
-    for (uint32_t c = 0; c < dim.arity; ++c) out[c] = jittered(cell[c], grid.axis[c], grid.inverseAxis[c], jitter[c]);
+    if (blue) blue->place((uint64_t(cell[2]) << 42) ^ (uint64_t(cell[1]) << 21) ^ cell[0], grid.arity, jitter);
+    for (uint32_t c = 0; c < grid.arity; ++c) out[c] = jittered(cell[c], grid.axis[c], grid.inverseAxis[c], jitter[c]);
 }
 
 } // namespace
 
-void fillStratified(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue) {
+void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                    const CrossPixelStrata* blue) {
     const StratifiedSet set(key, dim.grid);
-    for (uint32_t p = 0; p < dim.setSize; ++p) stratifiedPoint(set, dim, p, out + size_t(p) * dim.arity, blue);
+    const StrataGrid& grid = dim.grid;
+    if (grid.progressive) {
+        switch (dim.arity) {
+        case 1: return fillProgressive<1>(set, grid, first, count, out, blue);
+        case 2: return fillProgressive<2>(set, grid, first, count, out, blue);
+        default: return fillProgressive<3>(set, grid, first, count, out, blue);
+        }
+    } else {
+        for (uint32_t i = 0; i < count; ++i) permutedPoint(set, grid, first + i, out + size_t(i) * dim.arity, blue);
+    }
 }
 
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
-    stratifiedPoint(StratifiedSet(key, dim.grid), dim, p, out, blue);
+    const StratifiedSet set(key, dim.grid);
+    if (!dim.grid.progressive) return permutedPoint(set, dim.grid, p, out, blue);
+    if (blue) {
+        switch (dim.arity) {
+        case 1: return progressivePoint<1, true>(set, dim.grid, p, out, blue);
+        case 2: return progressivePoint<2, true>(set, dim.grid, p, out, blue);
+        default: return progressivePoint<3, true>(set, dim.grid, p, out, blue);
+        }
+    }
+    switch (dim.arity) {
+    case 1: return progressivePoint<1, false>(set, dim.grid, p, out, nullptr);
+    case 2: return progressivePoint<2, false>(set, dim.grid, p, out, nullptr);
+    default: return progressivePoint<3, false>(set, dim.grid, p, out, nullptr);
+    }
 }
 
 } // namespace stipple

@@ -1,8 +1,10 @@
 // patterns.h — the sample patterns as pure functions of a set key.
 //
-// Each pattern serves the set of one (pixel, dimension): M = k*N points of `arity` floats. fill* writes the
-// whole set (point p at out[p * arity]); point* writes point p alone and is bitwise equal to fill*'s point p.
-// The key is setKey(seed, pattern domain, pixel, dimension).
+// Each pattern serves the set of one (pixel, dimension, block): M points of `arity` floats (M = k*N for a
+// declared dimension, N for a streamed one). fill* writes points [first, first + count) of the set (point p at
+// out[(p - first) * arity]); point* writes point p alone and is bitwise equal to fill*'s point p. The key is
+// Sampler::setKey (seed, pattern domain, pixel, dimension, arity for streams, block).
+// A new pattern adds its pair here, a case to Sampler's dispatch and a row to the tables in abi.cpp.
 #pragma once
 
 #include "dimension.h"
@@ -14,20 +16,27 @@ namespace stipple {
 
 struct CrossPixelStrata; // blue_noise.h: with the blue-noise flag, stratified and independent take one
 
-void fillIndependent(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue = nullptr);
+void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                     const CrossPixelStrata* blue = nullptr);
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out,
                       const CrossPixelStrata* blue = nullptr);
 
-void fillStratified(uint64_t key, const Dimension& dim, float* out, const CrossPixelStrata* blue = nullptr);
+void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                    const CrossPixelStrata* blue = nullptr);
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out,
                      const CrossPixelStrata* blue = nullptr);
 
-void fillPoisson(uint64_t key, const Dimension& dim, float* out);
+// The stored set a "poisson" set key serves: its top 32 bits scaled to [0, setCount) (no division per value).
+constexpr uint32_t poissonSetIndex(uint64_t key, uint32_t setCount) {
+    return static_cast<uint32_t>(((key >> 32) * setCount) >> 32);
+}
+void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 // poisson-seed generates its set afresh on every call (the study's cost, kept deliberately); random access to
-// one sample therefore goes through a whole fill (Sampler::sample).
-void fillPoissonSeed(uint64_t key, const Dimension& dim, float* out);
+// one point therefore goes through a whole generation.
+void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 // sobol: the randomisation of one set (pattern_sobol.cpp). perPixel is the plain pattern; the blue-noise
 // variant (blue_noise.h) shares the Owen scrambling across a tile of pixels and gives each pixel its own block.
@@ -37,11 +46,18 @@ struct SobolSet {
     uint32_t blockBase = 0;   // Sobol' block of the set's first M points
     uint32_t blockStride = 1; // blocks between the set's block b and b + 1 (points past the set)
     static SobolSet perPixel(uint64_t key);
+    // Block b of the set (sample indices [b*N, (b+1)*N)): the set's Sobol' block blockBase + b * blockStride.
+    SobolSet atBlock(uint32_t block) const {
+        SobolSet s = *this;
+        s.blockBase += block * blockStride;
+        return s;
+    }
 };
-void fillSobol(const SobolSet& set, const Dimension& dim, float* out);
+void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out);
 
-void fillPmj02(uint64_t key, const Dimension& dim, float* out);
+// pmj02: the key is the block's (Sampler: hashCombine(set key, block) for every block, block 0 included).
+void fillPmj02(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 } // namespace stipple

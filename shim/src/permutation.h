@@ -40,3 +40,30 @@ constexpr uint32_t permuteIndex(uint32_t i, uint32_t length, uint32_t p) {
 }
 
 } // namespace stipple
+
+namespace stipple {
+
+// A cheaper hashed permutation of [0, length) for the per-value paths: a bijection on the next power of two
+// (xor-shift and odd-multiply rounds, each invertible mod 2^k), cycle-walked into [0, length); no division.
+// For a power-of-two length it is a single pass.
+constexpr uint32_t permuteIndexFast(uint32_t i, uint32_t length, uint32_t seed) {
+    uint32_t w = length - 1;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    const uint32_t half = (32 - static_cast<uint32_t>(__builtin_clz(w | 1))) / 2 + 1;
+    do {
+        i = (i ^ seed) & w;
+        i = (i * (seed | 1u)) & w;
+        i ^= i >> half;
+        i = (i * 0x2c1b3c6du) & w;
+        i ^= (i >> 3) ^ (seed >> 16 & w);
+        i = (i * 0x297a2d39u) & w;
+        i ^= i >> half;
+    } while (i >= length);
+    return i;
+}
+
+} // namespace stipple

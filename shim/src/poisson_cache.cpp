@@ -4,6 +4,7 @@
 #include "error.h"
 #include "hash.h"
 #include "pointsets/pointsets.h"
+#include "progressive_order.h"
 
 #include <algorithm>
 #include <string>
@@ -32,6 +33,7 @@ const float* PoissonFamily::set(uint32_t j) const {
         if (!(v >= 0.0f && v < 1.0f))
             throw Error(STIPPLE_ERROR_INTERNAL,
                         "poisson generator returned a value outside [0,1): " + std::to_string(v));
+    orderProgressively(points, arity_); // served in stored order: prefixes stay well spread
     slot.points = std::move(points);
     slot.ready.store(slot.points.data(), std::memory_order_release);
     return slot.points.data();

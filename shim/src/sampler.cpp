@@ -1,12 +1,13 @@
-// sampler.cpp — dispatch from a (pixel, dimension) request to its pattern.
+// sampler.cpp — dispatch from a (pixel, dimension, sample) request to its pattern and its set.
 #include "sampler.h"
 
 #include "blue_noise.h"
 #include "hash.h"
 #include "patterns.h"
+#include "poisson_cache.h"
 
 #include <algorithm>
-#include <optional>
+#include <bit>
 #include <utility>
 
 namespace stipple {
@@ -15,98 +16,168 @@ namespace {
 constexpr HashDomain kPatternDomain[STIPPLE_PATTERN_COUNT] = {HashDomain::Independent, HashDomain::Stratified,
                                                               HashDomain::Poisson,     HashDomain::PoissonSeed,
                                                               HashDomain::Sobol,       HashDomain::Pmj02};
+// Words folded into a key: a stream's arity, a block index > 0 (block 0 keeps the 1.0 key of the layout).
+constexpr uint64_t kStreamWord = 0x57e4a3c0ffee0000ull;
+constexpr uint64_t kBlockWord = 0xb10c000000000000ull;
+
+constexpr uint64_t streamWord(uint64_t key, uint32_t streamArity) {
+    return streamArity == 0 ? key : hashCombine(key, kStreamWord | streamArity);
+}
+
+constexpr HashDomain tileDomain(uint32_t pattern) {
+    return static_cast<HashDomain>(static_cast<uint64_t>(kPatternDomain[pattern]) ^
+                                   static_cast<uint64_t>(HashDomain::BlueNoiseTile));
+}
 } // namespace
+
+Dimension makePatternDimension(uint32_t pattern, uint32_t arity, uint32_t count, uint32_t points) {
+    Dimension dim;
+    dim.arity = arity;
+    dim.count = count;
+    dim.setSize = points;
+    dim.log2Length = static_cast<uint32_t>(std::bit_width(points - 1));
+    if (pattern == STIPPLE_PATTERN_STRATIFIED) dim.grid = StrataGrid::choose(arity, points);
+    if (pattern == STIPPLE_PATTERN_POISSON) dim.poisson = PoissonCache::global().acquire(arity, points);
+    if (pattern == STIPPLE_PATTERN_PMJ02) dim.pmj02 = Pmj02Family::acquire(dim.log2Length);
+    return dim;
+}
 
 Sampler::Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions,
                  uint32_t flags)
-    : pattern_(pattern), samplesPerPixel_(samplesPerPixel), seed_(seed), dimensions_(std::move(dimensions)),
-      flags_(flags) {}
-
-uint64_t Sampler::key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
-    return setKey(seed_, kPatternDomain[pattern_], pixelX, pixelY, d);
+    : pattern_(pattern), samplesPerPixel_(samplesPerPixel), seed_(seed),
+      seedKey_(seedKey(seed, kPatternDomain[pattern])), dimensions_(std::move(dimensions)), flags_(flags),
+      tileSeedKey_(seedKey(seed, tileDomain(pattern))) {
+    // Streams: grids and pmj02 families now (cheap: a family generates its sequences on first use), Poisson
+    // families on first use (they count against the cache budget).
+    for (uint32_t a = 1; a <= 3; ++a) {
+        Dimension& s = streams_[a - 1];
+        s.arity = a;
+        s.setSize = samplesPerPixel;
+        s.log2Length = static_cast<uint32_t>(std::bit_width(samplesPerPixel - 1));
+        if (pattern == STIPPLE_PATTERN_STRATIFIED) s.grid = StrataGrid::choose(a, samplesPerPixel);
+        if (pattern == STIPPLE_PATTERN_PMJ02) s.pmj02 = Pmj02Family::acquire(s.log2Length);
+    }
 }
 
-bool Sampler::maskShifted() const {
-    return blueNoise() && (pattern_ == STIPPLE_PATTERN_POISSON || pattern_ == STIPPLE_PATTERN_POISSON_SEED ||
-                           pattern_ == STIPPLE_PATTERN_PMJ02);
+uint64_t Sampler::pixelKey(const SetRef& set) const {
+    return streamWord(setKeyFrom(seedKey_, set.pixelX, set.pixelY, set.d), set.streamArity);
 }
 
-std::optional<CrossPixelStrata> Sampler::crossPixelStrata(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
-    if (!blueNoise() || (pattern_ != STIPPLE_PATTERN_STRATIFIED && pattern_ != STIPPLE_PATTERN_INDEPENDENT))
-        return std::nullopt;
-    const auto domain = static_cast<HashDomain>(static_cast<uint64_t>(kPatternDomain[pattern_]) ^
-                                                static_cast<uint64_t>(HashDomain::BlueNoiseTile));
-    return CrossPixelStrata{setKey(seed_, domain, pixelX >> kCrossPixelLevels, pixelY >> kCrossPixelLevels, d), pixelX,
-                            pixelY};
+uint64_t Sampler::blockKey(uint64_t key, uint32_t block) const {
+    if (pattern_ == STIPPLE_PATTERN_PMJ02) return hashCombine(key, block); // pmj02's own key of every block
+    return block == 0 ? key : hashCombine(key, kBlockWord | block);
 }
 
-uint64_t Sampler::patternKey(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
-    if (!maskShifted()) return key(pixelX, pixelY, d);
-    const auto domain = static_cast<HashDomain>(static_cast<uint64_t>(kPatternDomain[pattern_]) ^
-                                                static_cast<uint64_t>(HashDomain::BlueNoiseTile));
-    return setKey(seed_, domain, pixelX >> kBlueNoiseMaskLog2, pixelY >> kBlueNoiseMaskLog2, d);
+const Dimension& Sampler::streamDimension(uint32_t arity) const {
+    const Dimension& s = streams_[arity - 1];
+    if (pattern_ == STIPPLE_PATTERN_POISSON)
+        std::call_once(streamFamilyOnce_[arity - 1], [&] {
+            const_cast<Dimension&>(s).poisson = PoissonCache::global().acquire(arity, samplesPerPixel_);
+        });
+    return s;
 }
 
-SobolSet Sampler::sobolSet(uint32_t pixelX, uint32_t pixelY, uint32_t d) const {
-    const uint64_t pixelKey = key(pixelX, pixelY, d);
-    if (!blueNoise()) return SobolSet::perPixel(pixelKey);
-    const uint64_t dimensionKey = hashCombine(
-        mix64(seed_ ^ static_cast<uint64_t>(HashDomain::Sobol) ^ static_cast<uint64_t>(HashDomain::BlueNoiseTile)), d);
-    return zOrderSobolSet(dimensionKey, pixelKey, pixelX, pixelY, dimensions_[d].log2Length);
+void Sampler::fill(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const {
+    if (flags_ != 0) [[unlikely]]
+        return fillBlueNoise(set, dim, first, count, out);
+    const uint64_t key = pixelKey(set);
+    switch (pattern_) {
+    case STIPPLE_PATTERN_INDEPENDENT: return fillIndependent(blockKey(key, set.block), dim, first, count, out);
+    case STIPPLE_PATTERN_STRATIFIED: return fillStratified(blockKey(key, set.block), dim, first, count, out);
+    case STIPPLE_PATTERN_POISSON: return fillPoisson(blockKey(key, set.block), dim, first, count, out);
+    case STIPPLE_PATTERN_SOBOL: return fillSobol(SobolSet::perPixel(key).atBlock(set.block), dim, first, count, out);
+    case STIPPLE_PATTERN_PMJ02: return fillPmj02(blockKey(key, set.block), dim, first, count, out);
+    default: return fillPoissonSeed(blockKey(key, set.block), dim, first, count, out);
+    }
 }
 
-void Sampler::blueNoiseShiftInPlace(uint32_t pixelX, uint32_t pixelY, uint32_t d, size_t points, float* out) const {
-    if (!maskShifted()) return;
-    float shift[3];
-    const uint32_t arity = dimensions_[d].arity;
-    blueNoiseShift(patternKey(pixelX, pixelY, d), pixelX, pixelY, arity, shift);
-    applyToroidalShift(shift, arity, points, out);
+void Sampler::point(const SetRef& set, const Dimension& dim, uint32_t p, float* out) const {
+    if (flags_ != 0) [[unlikely]]
+        return fillBlueNoise(set, dim, p, 1, out);
+    const uint64_t key = pixelKey(set);
+    switch (pattern_) {
+    case STIPPLE_PATTERN_INDEPENDENT: return pointIndependent(blockKey(key, set.block), dim, p, out);
+    case STIPPLE_PATTERN_STRATIFIED: return pointStratified(blockKey(key, set.block), dim, p, out);
+    case STIPPLE_PATTERN_POISSON: return pointPoisson(blockKey(key, set.block), dim, p, out);
+    case STIPPLE_PATTERN_SOBOL: return pointSobol(SobolSet::perPixel(key).atBlock(set.block), dim, p, out);
+    case STIPPLE_PATTERN_PMJ02: return pointPmj02(blockKey(key, set.block), dim, p, out);
+    default: return pointPoissonSeed(blockKey(key, set.block), dim, p, out);
+    }
+}
+
+// Every variant keys the tile-shared part of a set from (seed, pattern ^ tile domain, tile, d[, stream arity][, block])
+// and the per-pixel part from the plain set key, so blocks and streams are blue noise on their own and every
+// sample stays uniform.
+void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const {
+    switch (pattern_) {
+    case STIPPLE_PATTERN_INDEPENDENT:
+    case STIPPLE_PATTERN_STRATIFIED: { // stratification across the pixels of a tile
+        const uint64_t tileKey = streamWord(
+            setKeyFrom(tileSeedKey_, set.pixelX >> kCrossPixelLevels, set.pixelY >> kCrossPixelLevels, set.d),
+            set.streamArity);
+        const CrossPixelStrata strata{blockKey(tileKey, set.block), set.pixelX, set.pixelY};
+        const uint64_t key = blockKey(pixelKey(set), set.block);
+        if (pattern_ == STIPPLE_PATTERN_INDEPENDENT) return fillIndependent(key, dim, first, count, out, &strata);
+        return fillStratified(key, dim, first, count, out, &strata);
+    }
+    case STIPPLE_PATTERN_SOBOL: { // Z-order blocks; block b of the set continues the pixel's blocks
+        const uint64_t dimensionKey = streamWord(hashCombine(tileSeedKey_, set.d), set.streamArity);
+        const SobolSet sobol = zOrderSobolSet(dimensionKey, pixelKey(set), set.pixelX, set.pixelY, dim.log2Length);
+        return fillSobol(sobol.atBlock(set.block), dim, first, count, out);
+    }
+    default: { // poisson, poisson-seed, pmj02: a tile-shared set shifted per pixel by the mask
+        const uint64_t tileKey = blockKey(streamWord(setKeyFrom(tileSeedKey_, set.pixelX >> kBlueNoiseMaskLog2,
+                                                                set.pixelY >> kBlueNoiseMaskLog2, set.d),
+                                                     set.streamArity),
+                                          set.block);
+        if (pattern_ == STIPPLE_PATTERN_POISSON)
+            fillPoisson(tileKey, dim, first, count, out);
+        else if (pattern_ == STIPPLE_PATTERN_PMJ02)
+            fillPmj02(tileKey, dim, first, count, out);
+        else
+            fillPoissonSeed(tileKey, dim, first, count, out);
+        float shift[3];
+        blueNoiseShift(tileKey, set.pixelX, set.pixelY, dim.arity, shift);
+        return applyToroidalShift(shift, dim.arity, count, out);
+    }
+    }
 }
 
 void Sampler::fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const {
     const Dimension& dim = dimensions_[d];
-    const uint64_t k = patternKey(pixelX, pixelY, d);
-    const std::optional<CrossPixelStrata> strata = crossPixelStrata(pixelX, pixelY, d);
-    const CrossPixelStrata* blue = strata ? &*strata : nullptr;
-    switch (pattern_) {
-    case STIPPLE_PATTERN_INDEPENDENT: fillIndependent(k, dim, out, blue); break;
-    case STIPPLE_PATTERN_STRATIFIED: fillStratified(k, dim, out, blue); break;
-    case STIPPLE_PATTERN_POISSON: fillPoisson(k, dim, out); break;
-    case STIPPLE_PATTERN_SOBOL: fillSobol(sobolSet(pixelX, pixelY, d), dim, out); break;
-    case STIPPLE_PATTERN_PMJ02: fillPmj02(k, dim, out); break;
-    default: fillPoissonSeed(k, dim, out); break;
-    }
-    blueNoiseShiftInPlace(pixelX, pixelY, d, dim.setSize, out);
+    fill(SetRef{pixelX, pixelY, d, 0, 0}, dim, 0, dim.setSize, out);
 }
 
 void Sampler::sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, float* out) const {
     const Dimension& dim = dimensions_[d];
-    const uint64_t k = patternKey(pixelX, pixelY, d);
-    if (pattern_ == STIPPLE_PATTERN_POISSON_SEED) {
-        // One generation for the k points of the sample, not k generations.
-        thread_local std::vector<float> scratch;
-        scratch.resize(dim.floatsPerPixel());
-        fillPoissonSeed(k, dim, scratch.data());
-        const float* first = scratch.data() + size_t(sampleIndex) * dim.floatsPerSample();
-        std::copy(first, first + dim.floatsPerSample(), out);
-        blueNoiseShiftInPlace(pixelX, pixelY, d, dim.count, out);
-        return;
+    const uint32_t block =
+        sampleIndex < samplesPerPixel_ ? 0 : sampleIndex / samplesPerPixel_; // no division in block 0
+    const uint32_t position = sampleIndex - block * samplesPerPixel_;
+    const SetRef set{pixelX, pixelY, d, 0, block};
+    if (dim.count == 1) return point(set, dim, position, out);
+    fill(set, dim, position * dim.count, dim.count, out); // one generation for poisson-seed, not k
+}
+
+void Sampler::stream(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, uint32_t arity,
+                     float* out) const {
+    const uint32_t block = sampleIndex < samplesPerPixel_ ? 0 : sampleIndex / samplesPerPixel_;
+    const uint32_t position = sampleIndex - block * samplesPerPixel_;
+    point(SetRef{pixelX, pixelY, d, arity, block}, streamDimension(arity), position, out);
+}
+
+void Sampler::streamFill(uint32_t pixelX, uint32_t pixelY, uint32_t firstSample, uint32_t count, uint32_t d,
+                         uint32_t arity, float* out) const {
+    const Dimension& dim = streamDimension(arity);
+    uint64_t i = firstSample;
+    const uint64_t end = uint64_t(firstSample) + count;
+    while (i < end) { // one fill per block touched
+        const uint32_t block = static_cast<uint32_t>(i / samplesPerPixel_);
+        const uint32_t position = static_cast<uint32_t>(i - uint64_t(block) * samplesPerPixel_);
+        const uint32_t run = static_cast<uint32_t>(std::min<uint64_t>(end - i, samplesPerPixel_ - position));
+        fill(SetRef{pixelX, pixelY, d, arity, block}, dim, position, run, out);
+        out += size_t(run) * arity;
+        i += run;
     }
-    const SobolSet sobol = pattern_ == STIPPLE_PATTERN_SOBOL ? sobolSet(pixelX, pixelY, d) : SobolSet{};
-    const std::optional<CrossPixelStrata> strata = crossPixelStrata(pixelX, pixelY, d);
-    const CrossPixelStrata* blue = strata ? &*strata : nullptr;
-    for (uint32_t j = 0; j < dim.count; ++j) {
-        const uint32_t p = sampleIndex * dim.count + j;
-        float* point = out + size_t(j) * dim.arity;
-        switch (pattern_) {
-        case STIPPLE_PATTERN_INDEPENDENT: pointIndependent(k, dim, p, point, blue); break;
-        case STIPPLE_PATTERN_STRATIFIED: pointStratified(k, dim, p, point, blue); break;
-        case STIPPLE_PATTERN_SOBOL: pointSobol(sobol, dim, p, point); break;
-        case STIPPLE_PATTERN_PMJ02: pointPmj02(k, dim, p, point); break;
-        default: pointPoisson(k, dim, p, point); break;
-        }
-    }
-    blueNoiseShiftInPlace(pixelX, pixelY, d, dim.count, out);
 }
 
 void Sampler::sampleIndependent(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t stream, float* out,

@@ -1,4 +1,10 @@
 // sampler.h — the object behind a stipple_sampler handle: immutable after creation, shared by threads.
+//
+// Two ways in:
+//  - the declared layout (dimension d of the desc, k values per sample): fillPixel / sample;
+//  - streams (no layout needed): dimension index d asked with an arity 1..3 at the call, one value per sample.
+//    Stream (d, arity) is its own set of N points per block, keyed apart from the declared layout's dimension d.
+// Sample index i lies in block b = i / N at position i mod N; each block is a full, independently randomised set.
 #pragma once
 
 #include "dimension.h"
@@ -7,9 +13,10 @@
 
 #include <stipple/stipple.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
+#include <mutex>
 #include <vector>
 
 namespace stipple {
@@ -27,27 +34,44 @@ public:
     const Dimension& dimension(uint32_t d) const { return dimensions_[d]; }
 
     // Arguments are checked by the ABI layer; these only compute.
-    void fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const;
+    void fillPixel(uint32_t pixelX, uint32_t pixelY, uint32_t d, float* out) const; // block 0
     void sample(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, float* out) const;
+    void stream(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t d, uint32_t arity, float* out) const;
+    // Samples [firstSample, firstSample + count) of stream (d, arity); firstSample + count <= 2^32.
+    void streamFill(uint32_t pixelX, uint32_t pixelY, uint32_t firstSample, uint32_t count, uint32_t d, uint32_t arity,
+                    float* out) const;
     void sampleIndependent(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t stream, float* out,
                            size_t count) const;
 
 private:
-    uint64_t key(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
+    // One set of the sampler: the declared dimension d (streamArity 0) or stream (d, streamArity), in one block.
+    struct SetRef {
+        uint32_t pixelX, pixelY, d, streamArity, block;
+    };
+    uint64_t pixelKey(const SetRef& set) const; // (seed, pattern, pixel, d, stream arity), before the block
+    uint64_t blockKey(uint64_t key, uint32_t block) const;
+    const Dimension& streamDimension(uint32_t arity) const;
     bool blueNoise() const { return (flags_ & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) != 0; }
-    bool maskShifted() const; // blue noise by per-pixel toroidal shifts (poisson, poisson-seed, pmj02)
-    std::optional<CrossPixelStrata> crossPixelStrata(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-    // The key the pattern's set is drawn from: per pixel, or per blue-noise tile (shared, then shifted per pixel).
-    uint64_t patternKey(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-    SobolSet sobolSet(uint32_t pixelX, uint32_t pixelY, uint32_t d) const;
-    void blueNoiseShiftInPlace(uint32_t pixelX, uint32_t pixelY, uint32_t d, size_t points, float* out) const;
+    // The pattern dispatch: points [first, first + count) / point p of one block of one set.
+    void fill(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
+    void point(const SetRef& set, const Dimension& dim, uint32_t p, float* out) const;
+    // The blue-noise flag's variants of fill (blue_noise.h); off the flagless path.
+    void fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
 
     uint32_t pattern_;
     uint32_t samplesPerPixel_;
     uint64_t seed_;
+    uint64_t seedKey_; // seedKey(seed, the pattern's hash domain)
     std::vector<Dimension> dimensions_;
     uint32_t flags_;
+    uint64_t tileSeedKey_; // seedKey(seed, the pattern's domain ^ BlueNoiseTile): keys of blue-noise tiles
+    // Streams of arity 1, 2, 3: sets of N points. A poisson stream acquires its family on first use.
+    std::array<Dimension, 3> streams_;
+    mutable std::array<std::once_flag, 3> streamFamilyOnce_;
 };
+
+// Builds the per-pattern state of a set of `points` points of one arity (strata grid, Poisson family).
+Dimension makePatternDimension(uint32_t pattern, uint32_t arity, uint32_t count, uint32_t points);
 
 // Validates desc completely (every message names the argument, its value and what was expected) and builds
 // the sampler. Throws stipple::Error.

@@ -46,10 +46,12 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
     if (in.reserved != 0)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                     argument + ".reserved is " + std::to_string(in.reserved) + "; expected 0");
-    Dimension dim;
-    dim.arity = in.arity;
-    dim.count = count;
-    dim.setSize = count * samplesPerPixel;
+    if (pattern == STIPPLE_PATTERN_PMJ02 && count * samplesPerPixel > (1u << Pmj02Family::kMaxLog2Length))
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    argument + ": count * samples_per_pixel = " + std::to_string(count * samplesPerPixel) +
+                        "; the pmj02 pattern serves sets of at most " +
+                        std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
+    Dimension dim = makePatternDimension(pattern, in.arity, count, count * samplesPerPixel);
     if (in.name) {
         const size_t length = strnlen(in.name, STIPPLE_MAX_NAME_LENGTH + 1);
         if (length > STIPPLE_MAX_NAME_LENGTH)
@@ -57,17 +59,6 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
                                                         std::to_string(STIPPLE_MAX_NAME_LENGTH) +
                                                         " characters; expected a shorter name or NULL");
         dim.name.assign(in.name, length);
-    }
-    if (pattern == STIPPLE_PATTERN_STRATIFIED) dim.grid = StrataGrid::choose(dim.arity, dim.setSize);
-    if (pattern == STIPPLE_PATTERN_POISSON) dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize);
-    dim.log2Length = static_cast<uint32_t>(std::bit_width(dim.setSize - 1));
-    if (pattern == STIPPLE_PATTERN_PMJ02) {
-        if (dim.log2Length > Pmj02Family::kMaxLog2Length)
-            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument +
-                                                        ": count * samples_per_pixel = " + std::to_string(dim.setSize) +
-                                                        "; the pmj02 pattern serves sets of at most " +
-                                                        std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
-        dim.pmj02 = Pmj02Family::acquire(dim.log2Length);
     }
     return dim;
 }
@@ -87,21 +78,29 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
     if (desc.samples_per_pixel < 1 || desc.samples_per_pixel > STIPPLE_MAX_SAMPLES_PER_PIXEL)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
                                                     "; expected 1.." + std::to_string(STIPPLE_MAX_SAMPLES_PER_PIXEL));
-    if (desc.dimension_count < 1 || desc.dimension_count > STIPPLE_MAX_DIMENSIONS)
+    if (desc.dimension_count > STIPPLE_MAX_DIMENSIONS)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->dimension_count is " + std::to_string(desc.dimension_count) +
-                                                    "; expected 1.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
-                                                    " (an empty layout has nothing to sample)");
-    requireNonNull(desc.dimensions, "desc->dimensions");
+                                                    "; expected 0.." + std::to_string(STIPPLE_MAX_DIMENSIONS) +
+                                                    " (0: no declared layout, streams only)");
     constexpr uint32_t kKnownFlags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
     if ((desc.flags & ~kKnownFlags) != 0)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                     "desc->flags is " + std::to_string(desc.flags) + "; unknown bits " +
                         std::to_string(desc.flags & ~kKnownFlags) +
                         " (this library knows only STIPPLE_SAMPLER_FLAG_BLUE_NOISE = 1)");
+    // Streams serve sets of N points of every pattern, so N itself must be a set pmj02 serves.
+    if (desc.pattern == STIPPLE_PATTERN_PMJ02 && desc.samples_per_pixel > (1u << Pmj02Family::kMaxLog2Length))
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
+                                                    "; the pmj02 pattern serves sets of at most " +
+                                                    std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
     if (desc.reserved != 0)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                     "desc->reserved is " + std::to_string(desc.reserved) + "; expected 0");
 
+    if (desc.dimension_count == 0) { // streams only; dimensions is not read and may be NULL
+        return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, {}, desc.flags);
+    }
+    requireNonNull(desc.dimensions, "desc->dimensions");
     constexpr size_t kDimensionSize = sizeof(stipple_dimension_desc);
     const uint32_t stride = desc.dimensions[0].struct_size;
     if (stride < kDimensionSize)

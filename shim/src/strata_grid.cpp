@@ -2,9 +2,13 @@
 #include "strata_grid.h"
 
 #include "permutation.h"
+#include "progressive_strata.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 namespace stipple {
 
@@ -21,6 +25,26 @@ uint32_t ceilRoot(uint64_t value, uint32_t degree) {
     while (n > 1 && power(n - 1) >= value) --n;
     while (power(n) < value) ++n;
     return static_cast<uint32_t>(std::max<uint64_t>(n, 1));
+}
+
+// One table per (arity, axis bits), built once and shared (a process holds few shapes: one per arity and M).
+std::shared_ptr<const std::vector<uint32_t>> sharedCellTable(uint32_t arity, const uint32_t axisBits[3],
+                                                             uint32_t points) {
+    static std::mutex mutex;
+    static std::map<uint64_t, std::shared_ptr<const std::vector<uint32_t>>> tables;
+    const uint64_t key = (uint64_t(arity) << 48) | (uint64_t(axisBits[0]) << 32) | (axisBits[1] << 16) | axisBits[2];
+    std::lock_guard<std::mutex> lock(mutex);
+    auto& table = tables[key];
+    if (!table) {
+        auto words = std::make_shared<std::vector<uint32_t>>(size_t(points) * arity);
+        for (uint32_t q = 0; q < points; ++q) {
+            uint32_t cell[3];
+            progressiveCell(q, arity, axisBits, cell);
+            for (uint32_t c = 0; c < arity; ++c) (*words)[size_t(q) * arity + c] = cell[c] << (24 - axisBits[c]);
+        }
+        table = std::move(words);
+    }
+    return table;
 }
 
 } // namespace
@@ -75,6 +99,13 @@ StrataGrid StrataGrid::choose(uint32_t arity, uint32_t points) {
     grid.lineDivider = FastDivider(grid.lineLength);
     grid.shortLineDivider = FastDivider(grid.lineLength > 1 ? grid.lineLength - 1 : 1);
     grid.axis0Divider = FastDivider(grid.axis[0]);
+    grid.progressive = grid.emptyCells == 0;
+    for (uint32_t c = 0; c < arity; ++c) {
+        grid.progressive = grid.progressive && (grid.axis[c] & (grid.axis[c] - 1)) == 0;
+        grid.axisBits[c] = static_cast<uint32_t>(std::countr_zero(grid.axis[c]));
+        grid.pointBits += grid.axisBits[c];
+    }
+    if (grid.progressive && points <= kCellTableLimit) grid.cellTable = sharedCellTable(arity, grid.axisBits, points);
     return grid;
 }
 

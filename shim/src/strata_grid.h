@@ -15,6 +15,8 @@
 #include "fast_divider.h"
 
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace stipple {
 
@@ -27,6 +29,15 @@ struct StrataGrid {
     uint32_t emptyCells = 0;      // s = cells - M (0 for an exact factorisation)
     double inverseAxis[3] = {1, 1, 1};
     FastDivider lineDivider, shortLineDivider, axis0Divider; // by L, L - 1 (padded only), axis[0]
+    // Progressive grids (exact, every axis a power of two, so M = 2^pointBits): set points are read in the
+    // interleaved bit-reversed order of their cells (see pattern_stratified.cpp); axisBits[c] = log2(axis[c]).
+    bool progressive = false;
+    uint32_t axisBits[3] = {0, 0, 0};
+    uint32_t pointBits = 0;
+    // Progressive grids with M <= kCellTableLimit: for each q, arity words cell[c] << (24 - axisBits[c]) (the cell's
+    // top bits of a 24-bit value), shared by every grid of the same shape. Larger grids compute cells on the fly.
+    static constexpr uint32_t kCellTableLimit = 1u << 16;
+    std::shared_ptr<const std::vector<uint32_t>> cellTable;
 
     static StrataGrid choose(uint32_t arity, uint32_t points);
     bool padded() const { return emptyCells != 0; }

@@ -103,8 +103,6 @@ BOOST_AUTO_TEST_CASE(create_rejects_bad_descriptions) {
          "pattern is 6"},
         {"unknown pattern, large", [](Layout& l) { l.desc.pattern = 0xffffffffu; }, STIPPLE_ERROR_INVALID_ARGUMENT,
          "pattern"},
-        {"empty layout", [](Layout& l) { l.desc.dimension_count = 0; }, STIPPLE_ERROR_OUT_OF_RANGE,
-         "dimension_count is 0"},
         {"too many dimensions", [](Layout& l) { l.desc.dimension_count = STIPPLE_MAX_DIMENSIONS + 1; },
          STIPPLE_ERROR_OUT_OF_RANGE, "dimension_count"},
         {"null layout", [](Layout& l) { l.desc.dimensions = nullptr; }, STIPPLE_ERROR_NULL_ARGUMENT,
@@ -113,6 +111,22 @@ BOOST_AUTO_TEST_CASE(create_rejects_bad_descriptions) {
          STIPPLE_ERROR_STRUCT_SIZE, "desc->struct_size"},
         {"desc struct zero", [](Layout& l) { l.desc.struct_size = 0; }, STIPPLE_ERROR_STRUCT_SIZE, "struct_size is 0"},
         {"unknown flag bit", [](Layout& l) { l.desc.flags = 2; }, STIPPLE_ERROR_INVALID_ARGUMENT, "unknown bits 2"},
+        {"unknown flag bit beside blue noise",
+         [](Layout& l) { l.desc.flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE | 0x80000000u; },
+         STIPPLE_ERROR_INVALID_ARGUMENT, "unknown bits 2147483648"},
+        {"unknown flag bit, no layout",
+         [](Layout& l) {
+             l.desc.dimension_count = 0;
+             l.desc.flags = 4;
+         },
+         STIPPLE_ERROR_INVALID_ARGUMENT, "unknown bits 4"},
+        {"pmj02 streams above its set limit",
+         [](Layout& l) {
+             l.desc.pattern = STIPPLE_PATTERN_PMJ02;
+             l.desc.dimension_count = 0;
+             l.desc.samples_per_pixel = 65537;
+         },
+         STIPPLE_ERROR_OUT_OF_RANGE, "samples_per_pixel is 65537; the pmj02 pattern serves sets of at most 65536"},
         {"reserved", [](Layout& l) { l.desc.reserved = 3; }, STIPPLE_ERROR_INVALID_ARGUMENT, "desc->reserved"},
         {"arity 0", [](Layout& l) { l.dims[1].arity = 0; }, STIPPLE_ERROR_INVALID_ARGUMENT, "dimensions[1].arity is 0"},
         {"arity 4", [](Layout& l) { l.dims[0].arity = 4; }, STIPPLE_ERROR_INVALID_ARGUMENT, "dimensions[0].arity is 4"},
@@ -204,8 +218,7 @@ BOOST_AUTO_TEST_CASE(sampling_calls_check_their_arguments) {
     BOOST_CHECK_EQUAL(stipple_sampler_fill_pixel(s.get(), 0, 0, 1, buffer.data(), 64), STIPPLE_OK);
 
     expectError(stipple_sampler_sample(nullptr, 0, 0, 0, 0, buffer.data(), 2), STIPPLE_ERROR_NULL_ARGUMENT, "sampler");
-    expectError(stipple_sampler_sample(s.get(), 0, 0, 16, 0, buffer.data(), 2), STIPPLE_ERROR_OUT_OF_RANGE,
-                "sample_index is 16");
+    BOOST_CHECK_EQUAL(stipple_sampler_sample(s.get(), 0, 0, 16, 0, buffer.data(), 2), STIPPLE_OK); // block 1 (1.1)
     expectError(stipple_sampler_sample(s.get(), 0, 0, 0, 7, buffer.data(), 2), STIPPLE_ERROR_OUT_OF_RANGE,
                 "dimension is 7");
     expectError(stipple_sampler_sample(s.get(), 0, 0, 0, 1, buffer.data(), 3), STIPPLE_ERROR_OUT_OF_RANGE, "out_count");
@@ -262,4 +275,41 @@ BOOST_AUTO_TEST_CASE(larger_output_structs_are_zeroed_past_what_we_know) {
     BOOST_CHECK_EQUAL(big.info.strata[2], 0u);
     BOOST_CHECK_EQUAL(big.info.reserved, 0u);
     BOOST_CHECK_EQUAL(big.future, 0u);
+}
+
+BOOST_AUTO_TEST_CASE(stream_calls_check_their_arguments) {
+    auto s = makeSampler(STIPPLE_PATTERN_STRATIFIED, 16, 3, {}); // no declared layout
+    std::vector<float> buffer(64, 0.0f);
+    expectError(stipple_sampler_stream(nullptr, 0, 0, 0, 0, 1, buffer.data(), 1), STIPPLE_ERROR_NULL_ARGUMENT,
+                "sampler");
+    expectError(stipple_sampler_stream(s.get(), 0, 0, 0, 0, 0, buffer.data(), 4), STIPPLE_ERROR_INVALID_ARGUMENT,
+                "arity is 0; expected 1, 2 or 3");
+    expectError(stipple_sampler_stream(s.get(), 0, 0, 0, 0, 4, buffer.data(), 4), STIPPLE_ERROR_INVALID_ARGUMENT,
+                "arity is 4");
+    expectError(stipple_sampler_stream(s.get(), 0, 0, 0, 0, 2, nullptr, 2), STIPPLE_ERROR_NULL_ARGUMENT, "out");
+    expectError(stipple_sampler_stream(s.get(), 0, 0, 0, 0, 3, buffer.data(), 2), STIPPLE_ERROR_OUT_OF_RANGE,
+                "out_count is 2; expected at least 3");
+    BOOST_CHECK_EQUAL(stipple_sampler_stream(s.get(), 0, 0, 0xffffffffu, 0xffffffffu, 3, buffer.data(), 3), STIPPLE_OK);
+
+    expectError(stipple_sampler_stream_fill(nullptr, 0, 0, 0, 1, 0, 1, buffer.data(), 1), STIPPLE_ERROR_NULL_ARGUMENT,
+                "sampler");
+    expectError(stipple_sampler_stream_fill(s.get(), 0, 0, 0, 0, 0, 1, buffer.data(), 1), STIPPLE_ERROR_OUT_OF_RANGE,
+                "sample_count is 0");
+    expectError(stipple_sampler_stream_fill(s.get(), 0, 0, 0xfffffff0u, 17, 0, 1, buffer.data(), 64),
+                STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is 4294967297");
+    expectError(stipple_sampler_stream_fill(s.get(), 0, 0, 0, 4, 0, 7, buffer.data(), 64),
+                STIPPLE_ERROR_INVALID_ARGUMENT, "arity is 7");
+    expectError(stipple_sampler_stream_fill(s.get(), 0, 0, 0, 22, 0, 3, buffer.data(), 64), STIPPLE_ERROR_OUT_OF_RANGE,
+                "out_count is 64; expected at least 66");
+    expectError(stipple_sampler_stream_fill(s.get(), 0, 0, 0, 4, 0, 1, nullptr, 4), STIPPLE_ERROR_NULL_ARGUMENT, "out");
+    BOOST_CHECK_EQUAL(stipple_sampler_stream_fill(s.get(), 0, 0, 0xfffffff0u, 16, 0, 1, buffer.data(), 16), STIPPLE_OK);
+
+    // Without a declared layout the layout calls name the way out.
+    expectError(stipple_sampler_fill_pixel(s.get(), 0, 0, 0, buffer.data(), 64), STIPPLE_ERROR_OUT_OF_RANGE,
+                "declares no layout");
+    expectError(stipple_sampler_sample(s.get(), 0, 0, 0, 0, buffer.data(), 64), STIPPLE_ERROR_OUT_OF_RANGE,
+                "use stipple_sampler_stream");
+    stipple_dimension_info info{};
+    info.struct_size = sizeof info;
+    expectError(stipple_sampler_get_dimension_info(s.get(), 0, &info), STIPPLE_ERROR_OUT_OF_RANGE, "dimension is 0");
 }

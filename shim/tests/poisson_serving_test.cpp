@@ -2,6 +2,7 @@
 // distinct, and the same relative radius rho as the stored set it came from (the torus maps are isometries);
 // the cache stays within its byte bound. The quality of the stored sets is tested by the pointsets_* tests.
 #define BOOST_TEST_MODULE poisson_serving
+#include "patterns.h"
 #include "sampler_fixture.h"
 
 #include "hash.h"
@@ -34,7 +35,7 @@ void checkServedRho(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixel
     if (pattern == STIPPLE_PATTERN_POISSON) {
         const uint64_t key = stipple::setKey(seed, stipple::HashDomain::Poisson, pixelX, 5, 0);
         auto family = stipple::PoissonCache::global().acquire(arity, n);
-        const uint32_t j = static_cast<uint32_t>(stipple::hashAt(key, 0) % family->setCount());
+        const uint32_t j = stipple::poissonSetIndex(key, family->setCount());
         stored.assign(family->set(j), family->set(j) + size_t(n) * arity);
     } else {
         const uint64_t key = stipple::setKey(seed, stipple::HashDomain::PoissonSeed, pixelX, 5, 0);

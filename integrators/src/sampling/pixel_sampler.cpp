@@ -1,9 +1,22 @@
 #include "sampling/pixel_sampler.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 namespace stipple::render {
+
+namespace {
+double emptyClockInterval() {
+    double sum = 0;
+    for (int i = 0; i < 4096; ++i) {
+        auto a = std::chrono::steady_clock::now();
+        auto b = std::chrono::steady_clock::now();
+        sum += std::chrono::duration<double>(b - a).count();
+    }
+    return sum / 4096;
+}
+} // namespace
 
 PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, uint32_t spp, uint64_t seed,
                            const SampleLayout& layout)
@@ -46,31 +59,67 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     if (api.sampler_create(&desc, &sampler_) != STIPPLE_OK)
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + shim.lastError());
+    clockSeconds_ = emptyClockInterval();
+    wholePixel_ = pattern == "poisson-seed";
 }
 
 PixelSampler::~PixelSampler() { shim_.api().sampler_release(sampler_); }
 
-void PixelSampler::fillPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
-    auto start = std::chrono::steady_clock::now();
-    const stipple_api& api = shim_.api();
-    for (size_t d = 0; d < out.offset_.size(); ++d) {
-        size_t n = size_t(spp_) * out.stride_[d];
-        if (api.sampler_fill_pixel(sampler_, x, y, uint32_t(d), out.values_.data() + out.offset_[d], n) != STIPPLE_OK)
-            throw ShimError("stipple_sampler_fill_pixel(" + std::to_string(x) + ", " + std::to_string(y) +
-                            ", dimension " + std::to_string(d) + ") failed: " + shim_.lastError());
-    }
-    out.samplerSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+void PixelSampler::startPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
+    out.x_ = x;
+    out.y_ = y;
+    std::fill(out.heldSample_.begin(), out.heldSample_.end(), PixelSamples::kNone);
 }
 
-PixelSamples::PixelSamples(const PixelSampler& sampler) {
+void PixelSampler::draw(uint32_t x, uint32_t y, uint32_t i, uint32_t d, float* out, size_t count) const {
+    if (shim_.api().sampler_sample(sampler_, x, y, i, d, out, count) != STIPPLE_OK)
+        throw ShimError("stipple_sampler_sample(" + std::to_string(x) + ", " + std::to_string(y) + ", sample " +
+                        std::to_string(i) + ", dimension " + std::to_string(d) + ") failed: " + shim_.lastError());
+}
+
+void PixelSampler::drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const {
+    if (shim_.api().sampler_fill_pixel(sampler_, x, y, d, out, count) != STIPPLE_OK)
+        throw ShimError("stipple_sampler_fill_pixel(" + std::to_string(x) + ", " + std::to_string(y) + ", dimension " +
+                        std::to_string(d) + ") failed: " + shim_.lastError());
+}
+
+PixelSamples::PixelSamples(const PixelSampler& sampler)
+    : sampler_(&sampler), wholePixel_(sampler.drawsWholePixel()), spp_(sampler.samplesPerPixel()) {
     size_t total = 0;
     for (const Dimension& d : sampler.layout().dimensions()) {
         offset_.push_back(total);
-        stride_.push_back(d.count * d.arity);
         arity_.push_back(d.arity);
-        total += size_t(sampler.samplesPerPixel()) * d.count * d.arity;
+        total += size_t(d.count) * d.arity;
     }
-    values_.assign(total, 0.0f);
+    values_.assign(total + 1, 0.0f); // + 1: a valid address for an empty layout
+    heldSample_.assign(offset_.size(), kNone);
+    if (wholePixel_) {
+        pixelOffset_.push_back(0);
+        for (size_t d = 0; d < offset_.size(); ++d)
+            pixelOffset_.push_back(pixelOffset_.back() +
+                                   size_t(spp_) * ((d + 1 < offset_.size() ? offset_[d + 1] : total) - offset_[d]));
+        pixelValues_.assign(pixelOffset_.back() + 1, 0.0f);
+    }
+}
+
+void PixelSamples::fetchPixel(uint32_t dim) const {
+    auto start = std::chrono::steady_clock::now();
+    sampler_->drawPixel(x_, y_, dim, &pixelValues_[pixelOffset_[dim]], pixelOffset_[dim + 1] - pixelOffset_[dim]);
+    samplerSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    heldSample_[dim] = 0;
+}
+
+void PixelSamples::fetch(uint32_t dim, uint32_t sampleIndex) const {
+    const size_t count = (dim + 1 < offset_.size() ? offset_[dim + 1] : values_.size() - 1) - offset_[dim];
+    if ((draws_++ & 15) == 0) {
+        auto start = std::chrono::steady_clock::now();
+        sampler_->draw(x_, y_, sampleIndex, dim, &values_[offset_[dim]], count);
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        samplerSeconds += 16.0 * std::max(0.0, elapsed - sampler_->clockSeconds_);
+    } else {
+        sampler_->draw(x_, y_, sampleIndex, dim, &values_[offset_[dim]], count);
+    }
+    heldSample_[dim] = sampleIndex;
 }
 
 } // namespace stipple::render

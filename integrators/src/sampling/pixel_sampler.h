@@ -1,6 +1,8 @@
-// A shim sampler for one render plus the per-pixel buffer and the per-(pixel, sample) view integrators read.
-// Per pixel, one stipple_sampler_fill_pixel per dimension (the shim's fast path) fills a per-thread buffer;
-// sample i then reads its slice. Time inside the shim is accumulated per buffer.
+// A shim sampler for one render plus the per-thread cache and the per-(pixel, sample) view integrators read.
+// Values are drawn lazily: the first read of a dimension in a pixel sample asks the shim for that sample's k
+// values of that dimension (stipple_sampler_sample, random access), so a path that ends at its first bounce never
+// pays for the dimensions of deeper bounces (poisson-seed, which generates a whole set for any request, is drawn a
+// pixel's dimension at a time). Time inside the shim is accumulated per cache (see PixelSamples).
 #pragma once
 
 #include "sampling/sample_layout.h"
@@ -25,29 +27,62 @@ public:
 
     uint32_t samplesPerPixel() const { return spp_; }
     const SampleLayout& layout() const { return layout_; }
-    // Fills every declared dimension of pixel (x, y) into `out`.
-    void fillPixel(uint32_t x, uint32_t y, PixelSamples& out) const;
+    // Points `out` at pixel (x, y); values are drawn when first read.
+    void startPixel(uint32_t x, uint32_t y, PixelSamples& out) const;
+    // poisson-seed generates a whole set for any request, so it is drawn a pixel's dimension at a time.
+    bool drawsWholePixel() const { return wholePixel_; }
 
 private:
+    friend class PixelSamples;
+    // Sample i's k values of dimension d into out (k*arity floats). Throws ShimError on failure.
+    void draw(uint32_t x, uint32_t y, uint32_t i, uint32_t d, float* out, size_t count) const;
+    void drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const;
+
     const ShimLibrary& shim_;
     stipple_sampler sampler_ = nullptr;
+    double clockSeconds_ = 0; // an empty steady_clock interval
+    bool wholePixel_ = false;
     uint32_t spp_;
     SampleLayout layout_;
 };
 
-// One pixel's values for every dimension (owned by one thread at a time).
+// One thread's cache of the values of the pixel sample being traced: per dimension, the sample index whose values
+// it holds. Owned by one thread at a time.
 class PixelSamples {
 public:
     explicit PixelSamples(const PixelSampler& sampler);
-    double samplerSeconds = 0; // time spent inside the shim by fillPixel on this buffer
+    // Time spent inside the shim, estimated from every 16th draw (reading the clock costs more than a draw): the
+    // timed draws' total times 16, each timed interval minus the clock's own cost (the mean of 4096 empty
+    // intervals, measured once per sampler), as benchmark harnesses subtract their timer overhead.
+    mutable double samplerSeconds = 0;
 
 private:
     friend class PixelSampler;
     friend class SampleView;
-    std::vector<float> values_;
-    std::vector<size_t> offset_;   // per dimension, start of its N*k*arity floats
-    std::vector<uint32_t> stride_; // per dimension, k*arity floats per pixel sample
+    const float* values(uint32_t dim, uint32_t sampleIndex) const {
+        if (wholePixel_) {
+            if (heldSample_[dim] == kNone) fetchPixel(dim);
+            return &pixelValues_[pixelOffset_[dim] +
+                                 size_t(sampleIndex) * (pixelOffset_[dim + 1] - pixelOffset_[dim]) / spp_];
+        }
+        if (heldSample_[dim] != sampleIndex) fetch(dim, sampleIndex);
+        return &values_[offset_[dim]];
+    }
+    void fetchPixel(uint32_t dim) const;
+    void fetch(uint32_t dim, uint32_t sampleIndex) const;
+
+    const PixelSampler* sampler_;
+    uint32_t x_ = 0, y_ = 0;
+    mutable std::vector<float> values_;        // per dimension, k*arity floats of the held sample
+    mutable std::vector<uint32_t> heldSample_; // per dimension, the sample index held (kNone: none)
+    mutable uint64_t draws_ = 0;
+    std::vector<size_t> offset_;
     std::vector<uint32_t> arity_;
+    bool wholePixel_ = false; // the sampler's drawsWholePixel()
+    uint32_t spp_ = 0;
+    mutable std::vector<float> pixelValues_; // whole-pixel mode: per dimension, N*k*arity floats
+    std::vector<size_t> pixelOffset_;        // dimension count + 1 entries
+    static constexpr uint32_t kNone = 0xffffffffu;
 };
 
 // The values of one pixel sample. Reading an undeclared dimension (index < 0) returns 0.5: integrators only do
@@ -58,11 +93,11 @@ public:
     uint32_t sampleIndex() const { return i_; }
     float get1D(int dim, uint32_t j = 0) const {
         if (dim < 0) return 0.5f;
-        return p_->values_[p_->offset_[dim] + size_t(i_) * p_->stride_[dim] + j * p_->arity_[dim]];
+        return p_->values(uint32_t(dim), i_)[j * p_->arity_[dim]];
     }
     Point2 get2D(int dim, uint32_t j = 0) const {
         if (dim < 0) return {0.5f, 0.5f};
-        const float* v = &p_->values_[p_->offset_[dim] + size_t(i_) * p_->stride_[dim] + j * p_->arity_[dim]];
+        const float* v = p_->values(uint32_t(dim), i_) + j * p_->arity_[dim];
         return {v[0], v[1]};
     }
 

@@ -15,9 +15,21 @@
  *   - linking host: link -lstipple and call the stipple_* functions directly (same semantics).
  *
  * Sample stream semantics:
- *   - A sampler is made from a pattern, N = samples per pixel, a 64-bit seed and the host's dimension
- *     layout: an ordered list of dimensions, each of arity 1, 2 or 3 with a count k >= 1 of values per
- *     pixel sample. Only declared dimensions are generated.
+ *   - A sampler is made from a pattern, N = samples per pixel, a 64-bit seed and optionally the host's
+ *     dimension layout: an ordered list of dimensions, each of arity 1, 2 or 3 with a count k >= 1 of values
+ *     per pixel sample. Only what is asked for is generated.
+ *   - Streams (1.1; no layout needed, dimension_count may be 0): stipple_sampler_stream asks dimension index d
+ *     (the host's own call counter, any uint32) with the arity it wants at that call. Stream (d, arity) is one
+ *     set of N points of that arity per pixel, randomised independently of every other (d, arity) and of the
+ *     declared layout. Asking one index d with two arities gives two independent sets (the 1D value is not
+ *     the first axis of the 2D one); each is a full set of the pattern on its own. Keep one arity per index
+ *     to keep its stratification across the samples of a pixel.
+ *   - Any sample index (1.1): index i is position i mod N of block i / N. Each block of N consecutive indices
+ *     is a full, independently randomised set of the pattern; sobol's block b is instead the next Sobol' block
+ *     of the same scrambled sequence (blocks 0..2^j-1 together are again a net). stratified (power-of-two
+ *     grids) and poisson order a set so that its prefixes are well spread; sobol and pmj02 are progressive
+ *     (README: "Any sample count"). The same for fill_pixel (block 0), sample, stream and stream_fill, with or
+ *     without STIPPLE_SAMPLER_FLAG_BLUE_NOISE.
  *   - Every value is a pure function of (seed, pixel x, pixel y, sample index, dimension, value index):
  *     bitwise the same for any thread count, tile order or call order. A sampler handle is immutable after
  *     creation and may be shared by any number of threads for sampling.
@@ -53,7 +65,7 @@ extern "C" {
 #endif
 
 #define STIPPLE_ABI_MAJOR 1
-#define STIPPLE_ABI_MINOR 0
+#define STIPPLE_ABI_MINOR 1
 
 /* ---- status codes --------------------------------------------------------------------------------- */
 typedef int32_t stipple_status;
@@ -78,7 +90,8 @@ typedef int32_t stipple_status;
 /* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
 /* Screen-space blue noise: neighbouring pixels' sets are decorrelated so that the per-pixel error is spread
  * as blue noise over the image (sobol: Z-order blocks of one sequence; other patterns: toroidal shifts from a
- * blue-noise mask). Every sample stays uniformly distributed. */
+ * blue-noise mask; stratified and independent: strata shared across a tile of pixels). Works for declared
+ * layouts and streams, in every block. Every sample stays uniformly distributed. Unknown bits are rejected. */
 #define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
 
 /* ---- limits ----------------------------------------------------------------------------------------- */
@@ -100,11 +113,11 @@ typedef struct stipple_dimension_desc {
 } stipple_dimension_desc;
 
 typedef struct stipple_sampler_desc {
-    uint32_t struct_size;                     /* sizeof(stipple_sampler_desc) */
-    uint32_t pattern;                         /* STIPPLE_PATTERN_* */
-    uint32_t samples_per_pixel;               /* N, 1..STIPPLE_MAX_SAMPLES_PER_PIXEL */
-    uint32_t dimension_count;                 /* 1..STIPPLE_MAX_DIMENSIONS */
-    uint64_t seed;                            /* any value */
+    uint32_t struct_size;       /* sizeof(stipple_sampler_desc) */
+    uint32_t pattern;           /* STIPPLE_PATTERN_* */
+    uint32_t samples_per_pixel; /* N, 1..STIPPLE_MAX_SAMPLES_PER_PIXEL */
+    uint32_t dimension_count;   /* 0..STIPPLE_MAX_DIMENSIONS (0 since 1.1: streams only, dimensions unread) */
+    uint64_t seed;              /* any value */
     const stipple_dimension_desc* dimensions; /* dimension_count entries, copied */
     uint32_t flags;                           /* STIPPLE_SAMPLER_FLAG_* bits; unknown bits are rejected */
     uint32_t reserved;                        /* must be 0 */
@@ -158,7 +171,8 @@ STIPPLE_API stipple_status stipple_sampler_fill_pixel(stipple_sampler sampler, u
                                                       uint32_t dimension, float* out, size_t out_count);
 
 /* Random access: the k values of one pixel sample for one dimension (k*arity floats), equal bitwise to the
- * corresponding part of stipple_sampler_fill_pixel. */
+ * corresponding part of stipple_sampler_fill_pixel. Since 1.1 any sample_index is served: index i >= N reads
+ * block i / N (1.0 returned STIPPLE_ERROR_OUT_OF_RANGE). */
 STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
                                                   uint32_t sample_index, uint32_t dimension, float* out,
                                                   size_t out_count);
@@ -167,6 +181,21 @@ STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint3
 STIPPLE_API stipple_status stipple_sampler_sample_independent(stipple_sampler sampler, uint32_t pixel_x,
                                                               uint32_t pixel_y, uint32_t sample_index, uint32_t stream,
                                                               float* out, size_t out_count);
+
+/* ---- 1.1: streams (no layout needed), any sample index ------------------------------------------------ */
+
+/* One value of stream (dimension, arity) for pixel (x, y), sample sample_index: arity floats (1, 2 or 3).
+ * Works on any sampler (with or without a declared layout); out_count >= arity. */
+STIPPLE_API stipple_status stipple_sampler_stream(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                  uint32_t sample_index, uint32_t dimension, uint32_t arity, float* out,
+                                                  size_t out_count);
+
+/* Batch call of a stream: samples first_sample .. first_sample + sample_count - 1 (sample_count >= 1,
+ * first_sample + sample_count <= 2^32), sample-major: out[i * arity + c]. Equal bitwise to sample_count
+ * stipple_sampler_stream calls. out_count >= sample_count * arity. */
+STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                       uint32_t first_sample, uint32_t sample_count, uint32_t dimension,
+                                                       uint32_t arity, float* out, size_t out_count);
 
 /* ---- the dlopen entry point --------------------------------------------------------------------------- */
 typedef struct stipple_api {
@@ -187,6 +216,10 @@ typedef struct stipple_api {
     stipple_status (*sampler_sample)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
     stipple_status (*sampler_sample_independent)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*,
                                                  size_t);
+    /* 1.1 (present when struct_size >= offsetof(stipple_api, sampler_stream_fill) + sizeof(void*)) */
+    stipple_status (*sampler_stream)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
+    stipple_status (*sampler_stream_fill)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t,
+                                          float*, size_t);
 } stipple_api;
 
 /* Returns the function table for ABI major version abi_major, or STIPPLE_ERROR_ABI_VERSION (with a
