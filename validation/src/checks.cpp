@@ -1,4 +1,5 @@
 #include "checks.h"
+#include "text.h"
 
 #include "efficiency_claims.h"
 #include "timing.h"
@@ -20,11 +21,6 @@ const char* checkStatusName(CheckStatus status) {
 
 namespace {
 
-std::string fmt(const char* format, auto... args) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
 std::vector<std::string> scenesOf(const Check& c, const Matrix& m) {
     std::vector<std::string> names;

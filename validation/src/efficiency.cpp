@@ -1,4 +1,5 @@
 #include "efficiency.h"
+#include "text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +11,6 @@ namespace stipple::validation {
 
 namespace {
 
-std::string fmt(const char* format, auto... args) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
 // Time of a row: thread CPU seconds when the renderer reported them, else wall seconds (older results).
 double cost(const ResultRow& r) { return r.cpuSeconds > 0 ? r.cpuSeconds : r.renderSeconds; }

@@ -1,4 +1,5 @@
 #include "efficiency_claims.h"
+#include "text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +10,6 @@
 namespace stipple::validation {
 
 namespace {
-std::string fmt(const char* format, auto... args) {
-    char buf[1024];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
 void worsen(CheckStatus& s, CheckStatus t) {
     if (t == CheckStatus::Fail || (t == CheckStatus::NotSeparated && s == CheckStatus::Pass)) s = t;

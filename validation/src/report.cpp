@@ -1,4 +1,5 @@
 #include "report.h"
+#include "text.h"
 
 #include "verdicts_report.h"
 
@@ -20,25 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string fmt(const char* format, auto... args) {
-    char buf[1024];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
-std::string html(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        switch (c) {
-        case '<': o += "&lt;"; break;
-        case '>': o += "&gt;"; break;
-        case '&': o += "&amp;"; break;
-        case '"': o += "&quot;"; break;
-        default: o += c;
-        }
-    }
-    return o;
-}
 
 // Single-quoted gnuplot string.
 std::string gq(const std::string& s) {

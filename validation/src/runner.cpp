@@ -1,4 +1,5 @@
 #include "runner.h"
+#include "text.h"
 
 #include <algorithm>
 #include <chrono>
@@ -37,11 +38,6 @@ std::vector<CellGroup> shardGroups(const Matrix& m, int shardIndex, int shardCou
 
 namespace {
 
-std::string fmt(const char* format, auto... args) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
 void writeCrop(const std::string& reportDir, const std::string& scene, const std::string& column,
                const render::Image& image, const CropSettings& crop) {

@@ -1,4 +1,5 @@
 #include "timing.h"
+#include "text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,11 +9,6 @@ namespace stipple::validation {
 
 namespace {
 
-std::string fmt(const char* format, auto... args) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
 double seconds(const ResultRow& r, TimeBasis basis) { return basis == TimeBasis::Cpu ? r.cpuSeconds : r.renderSeconds; }
 

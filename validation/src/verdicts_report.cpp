@@ -1,4 +1,5 @@
 #include "verdicts_report.h"
+#include "text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -15,18 +16,7 @@ namespace stipple::validation {
 
 namespace {
 
-std::string fmt(const char* format, auto... args) {
-    char buf[1024];
-    std::snprintf(buf, sizeof buf, format, args...);
-    return buf;
-}
 
-std::string html(const std::string& s) {
-    std::string o;
-    for (char c : s)
-        o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
-    return o;
-}
 
 // The 1-, 5- and 15-minute load averages as the kernel reports them (empty where there is no /proc).
 std::string loadAverage() {

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # What can be checked before rendering is checked first: a missing or malformed --baseline, a cache folder that
-# cannot be written and an -o that is not a report folder each fail with exit status 2 within a second, before
-# any reference or cell is rendered (the cache stays empty, the report folder is not created). The bound is 3 s
-# (measured about 0.6 s on 2 loaded cores, nearly all of it loading the shared libraries) so sanitizer builds pass.
+# cannot be written and an -o that is not a report folder each fail with exit status 2 before any reference or
+# cell is rendered: nothing rendered is logged, the cache stays empty, the report folder is not created. Those are
+# the proof; the time is printed (about 0.6 s on 2 loaded cores, nearly all of it loading the shared libraries) and
+# bounded only by a 60 s ceiling against a hang, so a busy machine or a sanitizer build cannot flip the verdict.
 # usage: fail_fast.sh STIPPLE_VALIDATE MATRIX WORKDIR
 set -u
 bin=$1 matrix=$2 work=$3
@@ -20,7 +21,7 @@ check() {  # LABEL REGEX ARGS...
   grep -q "reference for\|RMS" "$work/log" && fail "$label: rendered before failing"
   [ -z "$(find "$work/cache" -name '*.exr' 2> /dev/null)" ] || fail "$label: a reference was rendered"
   [ ! -e "$work/report" ] || fail "$label: the report folder was created"
-  [ $ms -lt 3000 ] || fail "$label: took ${ms} ms"
+  [ $ms -lt 60000 ] || fail "$label: took ${ms} ms (a hang?)"
   echo "ok: $label: exit 2 after ${ms} ms: $(grep stipple-validate "$work/log" | head -1)"
 }
 check "missing --baseline" "--baseline: .*no-such-results.json.*cannot open" \
