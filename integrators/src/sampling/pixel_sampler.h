@@ -1,8 +1,9 @@
 // A shim sampler for one render plus the per-thread cache and the per-(pixel, sample) view integrators read.
 // Values are drawn lazily: the first read of a dimension in a pixel sample asks the shim for that sample's k
 // values of that dimension (stipple_sampler_sample, random access), so a path that ends at its first bounce never
-// pays for the dimensions of deeper bounces (poisson-seed, which generates a whole set for any request, is drawn a
-// pixel's dimension at a time). Time inside the shim is accumulated per cache (see PixelSamples).
+// pays for the dimensions of deeper bounces (poisson-seed, which generates a whole set for any request, and poisson,
+// whose batch call is its cheaper path, are drawn a pixel's dimension at a time). Time inside the shim is
+// accumulated per cache (see PixelSamples).
 #pragma once
 
 #include "sampling/sample_layout.h"
@@ -29,7 +30,7 @@ public:
     const SampleLayout& layout() const { return layout_; }
     // Points `out` at pixel (x, y); values are drawn when first read.
     void startPixel(uint32_t x, uint32_t y, PixelSamples& out) const;
-    // poisson-seed generates a whole set for any request, so it is drawn a pixel's dimension at a time.
+    // poisson-seed and poisson are drawn a pixel's dimension at a time (their batch call is the cheaper path).
     bool drawsWholePixel() const { return wholePixel_; }
 
 private:
