@@ -52,7 +52,10 @@ void checkImage(const Image& image, const std::string& path) {
 }
 
 // Scene-linear to display-referred [0, 1], in place. OIIO's ColorConfig reads $OCIO when it is set.
+// A preview is small: converting it on the calling thread keeps OIIO's own thread pool (which the renderer's
+// thread count does not govern, and which ThreadSanitizer cannot see into) out of the process.
 void toDisplay(OIIO::ImageBuf& buffer) {
+    constexpr int kThreads = 1;
     static OIIO::ColorConfig config;
     static std::mutex mutex; // a ColorConfig caches its processors: one caller at a time
     std::lock_guard<std::mutex> lock(mutex);
@@ -60,11 +63,12 @@ void toDisplay(OIIO::ImageBuf& buffer) {
     bool ok;
     if (ocio && *ocio) {
         const char* linear = config.getColorSpaceNameByRole("scene_linear");
-        ok =
-            OIIO::ImageBufAlgo::ociodisplay(buffer, buffer, config.getDefaultDisplayName(), config.getDefaultViewName(),
-                                            linear ? linear : "linear", "", false, "", "", &config);
+        ok = OIIO::ImageBufAlgo::ociodisplay(buffer, buffer, config.getDefaultDisplayName(),
+                                             config.getDefaultViewName(), linear ? linear : "linear", "", false, "", "",
+                                             &config, OIIO::ROI(), kThreads);
     } else {
-        ok = OIIO::ImageBufAlgo::colorconvert(buffer, buffer, "linear", "sRGB", false, "", "", &config);
+        ok = OIIO::ImageBufAlgo::colorconvert(buffer, buffer, "linear", "sRGB", false, "", "", &config, OIIO::ROI(),
+                                              kThreads);
     }
     if (!ok) throw std::runtime_error("colour conversion to the display failed: " + buffer.geterror());
 }
