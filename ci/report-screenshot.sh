@@ -5,8 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 report=${1:-report} out=${2:-validation/report-first-screen.png}
 [ -f "$report/index.html" ] || { echo "report-screenshot: no $report/index.html (run bash ci/main.sh first)" >&2; exit 2; }
+report=$(realpath "$report") out=$(realpath -m "$out") # relative or absolute, from the repository root
 profile=$(mktemp -d)
 trap 'rm -rf "$profile"' EXIT
 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run --user-data-dir="$profile" \
-  --window-size=1280,900 --screenshot="$PWD/$out" "file://$PWD/$report/index.html" 2>/dev/null
+  --window-size=1280,900 --screenshot="$out" "file://$report/index.html" 2>/dev/null
 echo "report-screenshot: $out"
