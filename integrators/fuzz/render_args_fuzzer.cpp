@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace stipple::render;
     try {
         const RenderArgs a = parseRenderArgs(argv);
-        if (a.help) return 0;
+        if (a.help || a.version) return 0; // both stop before the arguments a run needs
         require(!a.scenePath.empty());
         require(a.options.spp <= (1u << 20));
         require(a.options.width >= 0 && a.options.width <= (1 << 15) && a.options.height >= 0 &&

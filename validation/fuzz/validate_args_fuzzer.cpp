@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace stipple::validation;
     try {
         const Args a = parseArgs(argv);
-        if (a.help) return 0;
+        if (a.help || a.version) return 0; // both stop before the arguments a run needs
         require(!a.matrix.empty());
         require(a.threads >= 0 && a.threads <= 1024);
         require(a.shardCount >= 1 && a.shardIndex >= 1 && a.shardIndex <= a.shardCount);
