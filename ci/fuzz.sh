@@ -2,7 +2,8 @@
 # Fuzzing CI: build the three libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each
 # for a bounded time over its seed corpus and its regressions. Exit status 1 when any harness finds a crash,
 # a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/ and the command
-# to replay it is printed. Fix the bug, then add the file to <part>/fuzz/regressions/ (replayed by CTest).
+# to replay it is printed. Fix the bug, then add the file to the harness's regressions folder below (replayed by
+# CTest).
 #
 # Environment (all optional):
 #   STIPPLE_FUZZ_DIR      build directory (default: the fuzz preset's build/fuzz)
@@ -24,15 +25,17 @@ cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
 cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer render_args_fuzzer \
     validate_args_fuzzer provenance_fuzzer
 
-# harness name, part folder, seed corpus folder (in <part>/fuzz/)
-harnesses=("stipple_api_fuzzer shim corpus" "scene_fuzzer integrators corpus" "matrix_fuzzer validation corpus"
-           "render_args_fuzzer integrators args-corpus" "validate_args_fuzzer validation args-corpus"
-           "provenance_fuzzer validation provenance-corpus")
+# harness name, part folder, seed corpus and regressions folders (in <part>/fuzz/)
+harnesses=("stipple_api_fuzzer shim corpus regressions" "scene_fuzzer integrators corpus regressions"
+           "matrix_fuzzer validation corpus regressions"
+           "render_args_fuzzer integrators args-corpus args-regressions"
+           "validate_args_fuzzer validation args-corpus args-regressions"
+           "provenance_fuzzer validation provenance-corpus provenance-regressions")
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 status=0
 for entry in "${harnesses[@]}"; do
-    read -r name part seeds <<<"$entry"
+    read -r name part seeds regressions <<<"$entry"
     [[ -n "${STIPPLE_FUZZ_ONLY:-}" && " $STIPPLE_FUZZ_ONLY " != *" $name "* ]] && continue
     out="$dir/fuzz-out/$name"
     rm -rf "$out"
@@ -41,7 +44,7 @@ for entry in "${harnesses[@]}"; do
     echo "fuzz.sh: $name for ${seconds}s"
     if "$dir/bin/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
         -print_final_stats=1 -artifact_prefix="$out/" \
-        "$out/corpus" "$root/$part/fuzz/$seeds" "$root/$part/fuzz/regressions" >"$log" 2>&1; then
+        "$out/corpus" "$root/$part/fuzz/$seeds" "$root/$part/fuzz/$regressions" >"$log" 2>&1; then
         execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
         echo "fuzz.sh: $name ok: ${execs:-?} executions, $(ls "$out/corpus" | wc -l) new corpus inputs"
     else

@@ -3,39 +3,26 @@
 // message; any other exception, a crash or a sanitizer report is a finding.
 #include "cli_args.h"
 
+#include <stipple/testing/fuzz_arguments.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace {
-
-void require(bool condition) {
-    if (!condition) __builtin_trap();
-}
-
-} // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size > 4096) return 0;
-    std::vector<std::string> argv(1);
-    for (size_t i = 0; i < size; ++i) {
-        if (data[i] == 0) {
-            if (argv.size() == 64) break;
-            argv.emplace_back();
-        } else {
-            argv.back() += char(data[i]);
-        }
-    }
+    const std::vector<std::string> argv = stipple::testing::argumentsFromFuzzInput(data, size);
     using namespace stipple::validation;
+    using stipple::testing::fuzzRequire;
     try {
         const Args a = parseArgs(argv);
         if (a.help || a.version) return 0; // both stop before the arguments a run needs
-        require(!a.matrix.empty());
-        require(a.threads >= 0 && a.threads <= 1024);
-        require(a.shardCount >= 1 && a.shardIndex >= 1 && a.shardIndex <= a.shardCount);
-        require(a.merge.empty() || (a.shardCount == 1 && !a.referencesOnly));
+        fuzzRequire(!a.matrix.empty());
+        fuzzRequire(a.threads >= 0 && a.threads <= 1024);
+        fuzzRequire(a.shardCount >= 1 && a.shardIndex >= 1 && a.shardIndex <= a.shardCount);
+        fuzzRequire(a.merge.empty() || (a.shardCount == 1 && !a.referencesOnly));
     } catch (const UsageError& e) {
-        require(e.what()[0] != '\0');
+        fuzzRequire(e.what()[0] != '\0');
     }
     return 0;
 }
