@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         fuzzRequire(!a.scenePath.empty());
         fuzzRequire(a.options.spp <= (1u << 20));
         fuzzRequire(a.options.width >= 0 && a.options.width <= (1 << 15) && a.options.height >= 0 &&
-                a.options.height <= (1 << 15));
+                    a.options.height <= (1 << 15));
         fuzzRequire(a.options.threads >= 0 && a.options.threads <= 4096);
         fuzzRequire(a.options.maxDepth >= -1 && a.options.maxDepth <= 1000);
         fuzzRequire(a.output.empty() || a.output.size() >= 4);
