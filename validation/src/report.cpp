@@ -21,8 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
-
 // Single-quoted gnuplot string.
 std::string gq(const std::string& s) {
     std::string o = "'";
@@ -156,41 +154,31 @@ std::string summaryTable(const Matrix& m, const std::vector<CellAggregate>& cell
     return s;
 }
 
-bool writeReport(const std::string& dir, const ReportInputs& in) {
-    const Matrix& m = *in.matrix;
-    const Results& r = *in.results;
-    fs::create_directories(dir);
-    writeResultsCsv((fs::path(dir) / "results.csv").string(), r.rows);
-    writeCellsCsv((fs::path(dir) / "cells.csv").string(), in.cells);
-    writeResultsJson((fs::path(dir) / "results.json").string(), r, in.cells, in.slopes, outcomesJson(in.outcomes));
-    bool plotsOk = writePlots(dir, in);
+namespace {
 
+const char* const kReportStyle =
+    "body{font-family:sans-serif;margin:1.5em auto;max-width:1240px;padding:0 1em;line-height:1.35}"
+    "table{border-collapse:collapse;margin:0.6em 0;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;"
+    "text-align:right;vertical-align:top}th{background:#eee}td:first-child{text-align:left}"
+    ".PASS{color:#080}.FAIL{color:#c00;font-weight:bold}.NOT{color:#a60}"
+    "pre{background:#f6f6f6;padding:0.6em;white-space:pre-wrap;overflow-wrap:anywhere;font-size:85%;margin:0.3em 0}"
+    "img{max-width:100%;height:auto}img.crop{image-rendering:pixelated}"
+    ".headline{background:#f4f7fb;border-left:4px solid #456;padding:0.2em 1em}.counts{font-size:130%}"
+    ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0}figcaption{text-align:center;font-size:90%}"
+    ".pair{display:flex;flex-wrap:wrap;gap:1%}.pair img{width:49%}.sw{display:inline-block;width:0.8em;height:0.8em;"
+    "margin-right:0.3em;border-radius:2px}.claim{margin:0.5em 0}.claim .st{font-weight:bold;margin-right:0.5em}"
+    ".note{font-size:90%;color:#333}section.scene{border-top:2px solid #456;margin-top:1.5em}"
+    "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:"
+    "320px}"
+    "section.scene>.top>div{flex:1 1 420px;min-width:0}"
+    "@media print{section.scene{break-before:page}details{display:block}}";
+
+// What the run was: renderer, rows, seeds, time, and how RMS is measured.
+std::string runNoteHtml(const ReportInputs& in) {
+    const Results& r = *in.results;
     std::ostringstream o;
-    o << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" "
-         "content=\"width=device-width, initial-scale=1\"><title>stipple-validate: "
-      << html(m.name)
-      << "</title>\n<style>body{font-family:sans-serif;margin:1.5em auto;max-width:1240px;padding:0 "
-         "1em;line-height:1.35}"
-         "table{border-collapse:collapse;margin:0.6em 0;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;"
-         "text-align:right;vertical-align:top}th{background:#eee}td:first-child{text-align:left}"
-         ".PASS{color:#080}.FAIL{color:#c00;font-weight:bold}.NOT{color:#a60}"
-         "pre{background:#f6f6f6;padding:0.6em;white-space:pre-wrap;overflow-wrap:anywhere;font-size:85%;margin:0.3em "
-         "0}"
-         "img{max-width:100%;height:auto}img.crop{image-rendering:pixelated}"
-         ".headline{background:#f4f7fb;border-left:4px solid #456;padding:0.2em 1em}.counts{font-size:130%}"
-         ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0}figcaption{text-align:center;font-size:90%}"
-         ".pair{display:flex;flex-wrap:wrap;gap:1%}.pair "
-         "img{width:49%}.sw{display:inline-block;width:0.8em;height:0.8em;"
-         "margin-right:0.3em;border-radius:2px}.claim{margin:0.5em 0}.claim .st{font-weight:bold;margin-right:0.5em}"
-         ".note{font-size:90%;color:#333}section.scene{border-top:2px solid #456;margin-top:1.5em}"
-         "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:"
-         "320px}"
-         "section.scene>.top>div{flex:1 1 420px;min-width:0}"
-         "@media print{section.scene{break-before:page}details{display:block}}</style></head><body>\n";
-    o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n";
-    o << verdictHeadlineHtml(in);
     o << "<p class=\"note\">Renderer " << html(r.rendererVersion) << "; " << r.rows.size() << " rows (cell × seed); "
-      << m.seeds.size() << " seeds per cell"
+      << in.matrix->seeds.size() << " seeds per cell"
       << (in.wallSeconds > 0 ? fmt("; run took %.1f s", in.wallSeconds) : std::string()) << ". " << html(in.note)
       << " RMS is the study's equation 1, sqrt((1/(H·W)) Σ<sub>pixels</sub> Σ<sub>rgb</sub> "
          "(I<sub>ref</sub> − I)²), over finite pixels, with the reference's noise floor removed from the MSE "
@@ -202,68 +190,73 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
         for (const auto& l : in.baseline->lines) o << html(l) << "\n";
         o << "</pre>\n";
     }
+    return o.str();
+}
 
-    auto claimHtml = [&](const CheckOutcome& c, const std::string& onlyScene) {
-        std::string status = checkStatusName(c.status);
-        std::ostringstream b;
-        b << "<div class=\"claim\"><span class=\"st " << status.substr(0, status.find(' ')) << "\">" << status
-          << (c.status == CheckStatus::NotSeparated ? (c.failsRun ? " (fails)" : " (tolerated)") : "") << "</span>"
-          << html(c.claim) << " <small>[" << html(c.check.where) << "]</small><pre>";
-        bool keep = false;
-        for (const auto& f : c.figures) {
-            // A figure line starts with its scene's name; indented lines continue the one before.
-            if (f.rfind("    ", 0) != 0)
-                keep = onlyScene.empty() || f.rfind(onlyScene + " ", 0) == 0 || f.rfind(onlyScene + ":", 0) == 0;
-            if (keep) b << html(f) << "\n";
-        }
-        b << "</pre></div>\n";
-        return b.str();
-    };
-
-    if (!plotsOk) o << "<p>gnuplot failed; see plots/gnuplot.log. Data: plots/*.dat.</p>\n";
-    const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
-    for (const auto& scene : m.scenes) {
-        const std::string b = safeName(scene.name);
-        o << "<section class=\"scene\" id=\"scene-" << b << "\"><h2>" << html(scene.name)
-          << "</h2>\n<div class=\"top\">";
-        const std::string picture = "crops/" + b + "-reference-full.png";
-        if (fs::exists(fs::path(dir) / picture))
-            o << "<img src=\"" << picture << "\" alt=\"" << html(scene.name) << ": the reference, tone-mapped\">";
-        o << "<div>";
-        for (const auto& s : r.scenes)
-            if (s.name == scene.name)
-                o << "<p class=\"note\">" << html(s.integrator) << ", " << s.width << "×" << s.height << ", "
-                  << s.triangles << " triangles; reference " << s.referenceSpp << " spp (" << html(m.reference.pattern)
-                  << "), noise floor " << fmt("%.3g", s.noiseFloor) << " (MSE).</p>";
-        for (const auto& c : in.outcomes)
-            if (c.check.scene == scene.name || c.check.scene == "all") o << claimHtml(c, scene.name);
-        o << "</div></div>\n<div class=\"pair\"><img src=\"plots/" << b << "-rms-spp.png\" alt=\"" << html(scene.name)
-          << ": RMS against samples per pixel, one line per pattern, 95% intervals\"><img src=\"plots/" << b
-          << "-rms-seconds.png\" alt=\"" << html(scene.name) << ": RMS against median render seconds\"></div>\n";
-        o << sceneVerdictsHtml(in, scene);
-        o << "<details><summary>Centre crop and all cells of " << html(scene.name)
-          << "</summary>\n<div class=\"grid\">";
-        std::vector<std::string> columns = m.patterns;
-        columns.push_back("reference");
-        for (const auto& p : columns) {
-            const std::string f = cropFile(scene.name, p);
-            if (fs::exists(fs::path(dir) / f))
-                o << "<figure><img class=\"crop\" src=\"" << f << "\" alt=\"" << html(scene.name + " centre crop, " + p)
-                  << "\"><figcaption>" << html(p) << " (" << cropSpp << " spp)</figcaption></figure>";
-        }
-        o << "</div>\n";
-        std::vector<CellAggregate> mine;
-        for (const auto& c : in.cells)
-            if (c.scene == scene.name) mine.push_back(c);
-        o << cellTable(m, mine, 0) << "</details></section>\n";
+// One claim with its status and figures; with onlyScene, only the figure lines of that scene.
+std::string claimHtml(const CheckOutcome& c, const std::string& onlyScene) {
+    const std::string status = checkStatusName(c.status);
+    std::ostringstream b;
+    b << "<div class=\"claim\"><span class=\"st " << status.substr(0, status.find(' ')) << "\">" << status
+      << (c.status == CheckStatus::NotSeparated ? (c.failsRun ? " (fails)" : " (tolerated)") : "") << "</span>"
+      << html(c.claim) << " <small>[" << html(c.check.where) << "]</small><pre>";
+    bool keep = false;
+    for (const auto& f : c.figures) {
+        // A figure line starts with its scene's name; indented lines continue the one before.
+        if (f.rfind("    ", 0) != 0)
+            keep = onlyScene.empty() || f.rfind(onlyScene + " ", 0) == 0 || f.rfind(onlyScene + ":", 0) == 0;
+        if (keep) b << html(f) << "\n";
     }
+    b << "</pre></div>\n";
+    return b.str();
+}
 
-    o << "<h2>All claims</h2>\n";
-    for (const auto& c : in.outcomes) o << claimHtml(c, "");
+// A scene's section: the reference, its claims, the two plots, the verdicts per region, the crops and cells.
+std::string sceneSectionHtml(const std::string& dir, const ReportInputs& in, const MatrixScene& scene) {
+    const Matrix& m = *in.matrix;
+    const std::string b = safeName(scene.name);
+    std::ostringstream o;
+    o << "<section class=\"scene\" id=\"scene-" << b << "\"><h2>" << html(scene.name) << "</h2>\n<div class=\"top\">";
+    const std::string picture = "crops/" + b + "-reference-full.png";
+    if (fs::exists(fs::path(dir) / picture))
+        o << "<img src=\"" << picture << "\" alt=\"" << html(scene.name) << ": the reference, tone-mapped\">";
+    o << "<div>";
+    for (const auto& s : in.results->scenes)
+        if (s.name == scene.name)
+            o << "<p class=\"note\">" << html(s.integrator) << ", " << s.width << "×" << s.height << ", " << s.triangles
+              << " triangles; reference " << s.referenceSpp << " spp (" << html(m.reference.pattern)
+              << "), noise floor " << fmt("%.3g", s.noiseFloor) << " (MSE).</p>";
+    for (const auto& c : in.outcomes)
+        if (c.check.scene == scene.name || c.check.scene == "all") o << claimHtml(c, scene.name);
+    o << "</div></div>\n<div class=\"pair\"><img src=\"plots/" << b << "-rms-spp.png\" alt=\"" << html(scene.name)
+      << ": RMS against samples per pixel, one line per pattern, 95% intervals\"><img src=\"plots/" << b
+      << "-rms-seconds.png\" alt=\"" << html(scene.name) << ": RMS against median render seconds\"></div>\n";
+    o << sceneVerdictsHtml(in, scene);
+    o << "<details><summary>Centre crop and all cells of " << html(scene.name) << "</summary>\n<div class=\"grid\">";
+    const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
+    std::vector<std::string> columns = m.patterns;
+    columns.push_back("reference");
+    for (const auto& p : columns) {
+        const std::string f = cropFile(scene.name, p);
+        if (fs::exists(fs::path(dir) / f))
+            o << "<figure><img class=\"crop\" src=\"" << f << "\" alt=\"" << html(scene.name + " centre crop, " + p)
+              << "\"><figcaption>" << html(p) << " (" << cropSpp << " spp)</figcaption></figure>";
+    }
+    o << "</div>\n";
+    std::vector<CellAggregate> mine;
+    for (const auto& c : in.cells)
+        if (c.scene == scene.name) mine.push_back(c);
+    o << cellTable(m, mine, 0) << "</details></section>\n";
+    return o.str();
+}
+
+// Fitted slopes of log RMS against log spp, scene by pattern.
+std::string slopesTableHtml(const ReportInputs& in) {
+    const Matrix& m = *in.matrix;
+    std::ostringstream o;
     o << "<h2>Slopes of log RMS vs log spp</h2>\n<p class=\"note\">Least squares over per-seed points; 95% interval "
          "on the slope. Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) in "
-         "2D, "
-         "less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
+         "2D, less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
     for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
     for (const auto& scene : m.scenes) {
@@ -278,6 +271,12 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
         o << "</tr>\n";
     }
     o << "</table>\n";
+    return o.str();
+}
+
+// Per scene: load and BVH times, the reference's spp, time, floor and cache key.
+std::string scenesTableHtml(const Results& r) {
+    std::ostringstream o;
     o << "<details><summary>Scenes: load, BVH build, references</summary><table><tr><th>scene</th><th>file</th>"
          "<th>size</th><th>load s</th><th>BVH s</th><th>warm-up s</th><th>ref. spp</th><th>ref. s</th>"
          "<th>floor (MSE)</th><th>reference key</th></tr>\n";
@@ -289,6 +288,31 @@ bool writeReport(const std::string& dir, const ReportInputs& in) {
                  s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached", s.noiseFloor)
           << "<td>" << html(s.referenceKey) << "</td></tr>\n";
     o << "</table></details>\n";
+    return o.str();
+}
+
+} // namespace
+
+bool writeReport(const std::string& dir, const ReportInputs& in) {
+    const Matrix& m = *in.matrix;
+    const Results& r = *in.results;
+    fs::create_directories(dir);
+    writeResultsCsv((fs::path(dir) / "results.csv").string(), r.rows);
+    writeCellsCsv((fs::path(dir) / "cells.csv").string(), in.cells);
+    writeResultsJson((fs::path(dir) / "results.json").string(), r, in.cells, in.slopes, outcomesJson(in.outcomes));
+    const bool plotsOk = writePlots(dir, in);
+
+    std::ostringstream o;
+    o << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" "
+         "content=\"width=device-width, initial-scale=1\"><title>stipple-validate: "
+      << html(m.name) << "</title>\n<style>" << kReportStyle << "</style></head><body>\n";
+    o << "<h1>stipple-validate: " << html(m.name) << "</h1>\n";
+    o << verdictHeadlineHtml(in) << runNoteHtml(in);
+    if (!plotsOk) o << "<p>gnuplot failed; see plots/gnuplot.log. Data: plots/*.dat.</p>\n";
+    for (const auto& scene : m.scenes) o << sceneSectionHtml(dir, in, scene);
+    o << "<h2>All claims</h2>\n";
+    for (const auto& c : in.outcomes) o << claimHtml(c, "");
+    o << slopesTableHtml(in) << scenesTableHtml(r);
     o << "<p>Data: <a href=\"results.csv\">results.csv</a> (per seed), <a href=\"cells.csv\">cells.csv</a> (per cell), "
          "<a href=\"results.json\">results.json</a>; plots as SVG and gnuplot data in <a "
          "href=\"plots/plots.gp\">plots/</a>.</p>\n";
