@@ -38,7 +38,6 @@ std::vector<CellGroup> shardGroups(const Matrix& m, int shardIndex, int shardCou
 
 namespace {
 
-
 void writeCrop(const std::string& reportDir, const std::string& scene, const std::string& column,
                const render::Image& image, const CropSettings& crop) {
     int size = std::min({crop.size, image.width, image.height});
@@ -100,6 +99,53 @@ void writeRegionCrops(const std::string& reportDir, const MatrixScene& scene, co
     }
 }
 
+// The matrix's scene loaded, or an error naming the matrix; a scene marked unloadable by preflight fails the same.
+std::unique_ptr<render::Scene> loadMatrixScene(const MatrixScene& ms, const Matrix& m, const RunOptions& opt) {
+    if (auto bad = opt.unloadable.find(ms.name); bad != opt.unloadable.end())
+        throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + bad->second);
+    try {
+        return render::Scene::load(ms.path);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + e.what());
+    }
+}
+
+SceneInfo sceneInfo(const MatrixScene& ms, const render::Scene& scene, const render::RenderOptions& base) {
+    SceneInfo info;
+    info.name = ms.name;
+    info.file = ms.file;
+    info.contentHash = scene.contentHash();
+    info.integrator = base.integrator;
+    info.width = base.width;
+    info.height = base.height;
+    info.triangles = scene.triangleCount();
+    info.loadSeconds = scene.loadSeconds();
+    info.buildSeconds = scene.buildSeconds();
+    return info;
+}
+
+// Perceptual error and the error's spectrum, after the timed render, and the error per region. FLIP is computed
+// on the whole image (its filters see a region's surroundings) and averaged per region.
+void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& image, const MatrixScene& ms,
+                     const std::vector<double>& regionFloors) {
+    const FlipMaps flip = ldrFlipLinear(ref.image, image);
+    row.flip = flip.mean();
+    row.spectrumRatio = errorSpectrum(ref.image, image).highOverLow;
+    for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
+        const Region& region = ms.regions[ri];
+        const PixelRect px = pixelRect(region, image.width, image.height);
+        double sum = 0;
+        for (int y = px.y; y < px.y + px.h; ++y)
+            for (int x = px.x; x < px.x + px.w; ++x) sum += flip.flip[size_t(y) * flip.width + x];
+        row.regionFlip.push_back(sum / double(px.w * px.h));
+        row.regionSpectrumRatio.push_back(
+            errorSpectrum(regionImage(ref.image, region), regionImage(image, region)).highOverLow);
+        const double mse = regionError(ref.image, image, region).mse;
+        row.regionMse.push_back(mse);
+        row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
+    }
+}
+
 } // namespace
 
 Results runMatrix(const Matrix& m, const RunOptions& opt) {
@@ -123,27 +169,11 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
         // run ends with a non-zero status after writing the report of the rest.
         try {
             progress.pause();
-            if (auto bad = opt.unloadable.find(ms.name); bad != opt.unloadable.end())
-                throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + bad->second);
             progress.note("loading " + ms.path);
-            std::unique_ptr<render::Scene> scene;
-            try {
-                scene = render::Scene::load(ms.path);
-            } catch (const std::exception& e) {
-                throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + e.what());
-            }
+            const std::unique_ptr<render::Scene> scene = loadMatrixScene(ms, m, opt);
             const render::RenderOptions base = resolveRenderOptions(ms, *scene, threads);
 
-            SceneInfo info;
-            info.name = ms.name;
-            info.file = ms.file;
-            info.contentHash = scene->contentHash();
-            info.integrator = base.integrator;
-            info.width = base.width;
-            info.height = base.height;
-            info.triangles = scene->triangleCount();
-            info.loadSeconds = scene->loadSeconds();
-            info.buildSeconds = scene->buildSeconds();
+            SceneInfo info = sceneInfo(ms, *scene, base);
 
             render::RenderOptions refOptions = base;
             refOptions.pattern = m.reference.pattern;
@@ -189,24 +219,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     o.seed = g.seed;
                     render::RenderResult r = scene->render(o);
                     ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
-                    // Perceptual error and the error's spectrum, after the timed render. FLIP is computed on the
-                    // whole image (its filters see a region's surroundings) and averaged per region.
-                    const FlipMaps flip = ldrFlipLinear(ref.image, r.image);
-                    row.flip = flip.mean();
-                    row.spectrumRatio = errorSpectrum(ref.image, r.image).highOverLow;
-                    for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
-                        const PixelRect px = pixelRect(ms.regions[ri], r.image.width, r.image.height);
-                        double sum = 0;
-                        for (int y = px.y; y < px.y + px.h; ++y)
-                            for (int x = px.x; x < px.x + px.w; ++x) sum += flip.flip[size_t(y) * flip.width + x];
-                        row.regionFlip.push_back(sum / double(px.w * px.h));
-                        row.regionSpectrumRatio.push_back(
-                            errorSpectrum(regionImage(ref.image, ms.regions[ri]), regionImage(r.image, ms.regions[ri]))
-                                .highOverLow);
-                        const double mse = regionError(ref.image, r.image, ms.regions[ri]).mse;
-                        row.regionMse.push_back(mse);
-                        row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
-                    }
+                    addImageMetrics(row, ref, r.image, ms, regionFloors);
                     results.rows.push_back(row);
                     if (g.spp == cropSpp && g.seed == m.seeds.front()) {
                         writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
