@@ -16,7 +16,6 @@ using stipple::requireNonNull;
 
 namespace {
 
-constexpr uint32_t kVersionPatch = 0;
 constexpr const char* kPatternNames[STIPPLE_PATTERN_COUNT] = {"independent",  "stratified", "poisson",
                                                               "poisson-seed", "sobol",      "pmj02"};
 
@@ -74,7 +73,7 @@ STIPPLE_API stipple_status stipple_get_version(uint32_t* major, uint32_t* minor,
         requireNonNull(patch, "patch");
         *major = STIPPLE_ABI_MAJOR;
         *minor = STIPPLE_ABI_MINOR;
-        *patch = kVersionPatch;
+        *patch = STIPPLE_VERSION_PATCH; // the project's, from CMake
     });
 }
 
