@@ -13,7 +13,6 @@
 #include <stipple/testing/peak_memory.h>
 
 #include <cstdio>
-#include <random>
 
 using namespace stipple::render;
 namespace limits = stipple::render::limits;
@@ -25,18 +24,20 @@ const char* kHeader = "name: big\ncamera: { position: [0, 1, 6.8], look_at: [0, 
 
 // Meshes of 300 random vertices and 100 triangles each, written inline, until the text reaches `bytes`.
 std::string meshScene(size_t bytes) {
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<float> u(0, 1);
+    // Varied digits from a fixed 64-bit LCG (Knuth's MMIX constants): the text's shape, not statistics.
+    uint64_t state = 1;
+    auto next = [&] { return (state = state * 6364136223846793005ull + 1442695040888963407ull) >> 33; };
+    auto u = [&] { return float(next() % 10000) / 10000.0f; };
     std::string s = kHeader;
     char buf[64];
     while (s.size() < bytes) {
         s += "  - type: mesh\n    material: white\n    vertices: [";
         for (int i = 0; i < 300; ++i) {
-            std::snprintf(buf, sizeof buf, "%s[%.4f, %.4f, %.4f]", i ? ", " : "", u(rng), u(rng), u(rng));
+            std::snprintf(buf, sizeof buf, "%s[%.4f, %.4f, %.4f]", i ? ", " : "", u(), u(), u());
             s += buf;
         }
         s += "]\n    indices: [";
-        for (int i = 0; i < 300; ++i) s += (i ? ", " : "") + std::to_string(rng() % 300);
+        for (int i = 0; i < 300; ++i) s += (i ? ", " : "") + std::to_string(next() % 300);
         s += "]\n";
     }
     return s;
