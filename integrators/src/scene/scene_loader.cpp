@@ -459,11 +459,9 @@ TriangleMesh Loader::parseMeshGeometry(const yaml::Node& n, const std::string& t
         } else {
             yaml::Node v = require(n, "vertices", ctx), idx = require(n, "indices", ctx);
             if (!v.IsSequence() || v.size() < 3) fail(v, "vertices", "a list of at least 3 points");
-            tm.positions.reserve(v.size());
             for (const yaml::Node& p : v) tm.positions.push_back(vec3(p, "vertices"));
             if (!idx.IsSequence() || idx.size() == 0 || idx.size() % 3 != 0)
                 fail(idx, "indices", "a flat list of vertex indices, 3 per triangle");
-            tm.indices.reserve(idx.size());
             for (const yaml::Node& i : idx)
                 tm.indices.push_back(uint32_t(integer(i, "indices", 0, (long long)tm.positions.size() - 1)));
         }
