@@ -2,7 +2,9 @@
 # stipple-render's outputs are all-or-nothing:
 #  1. a scene whose name: is a path writes only <safe name>.exr/.png in the working folder;
 #  2. SIGTERM at any moment of a run leaves no temporary and the EXR/PNG pair either both old or both new;
-#  3. after SIGKILL (which no handler sees) the next run sweeps the dead run's temporaries.
+#  3. after SIGKILL (which no handler sees) the next run sweeps the dead run's temporaries;
+#  4. a SIGKILL between the EXR and PNG renames (the state built exactly: both temporaries, the publish journal,
+#     the EXR renamed) is finished by the next run's sweep: the new pair, no temporary, no journal.
 # usage: cli_kill_rerun.sh STIPPLE_RENDER SCENE WORKDIR
 set -u
 exe=$1 scene=$2 work=$3
@@ -57,4 +59,25 @@ render 16 5 > /dev/null || fail "rerun after SIGKILL"
 left=$(find "$work/out" -name '*.stipple-tmp-*' ! -name "*-$$-0.exr" | wc -l)
 [ "$left" -eq 0 ] || fail "the rerun did not sweep dead temporaries: $(ls -a "$work/out")"
 [ -f "$work/out/.img.exr.stipple-tmp-$host-$$-0.exr" ] || fail "the sweep removed a live process's temporary"
+
+# 4. The interrupted publication. The journal's format is documented in publish_journal.h.
+rm -f "$work/out/.img.exr.stipple-tmp-$host-$$-0.exr"
+render 16 6 > /dev/null || fail "old pair for 4"
+old_png=$(sum "$work/out/img.png")
+mkdir -p "$work/new"
+"$exe" "$scene" --spp 1 --width 16 --height 16 --seed 7 --threads 2 -o "$work/new/img.exr" > /dev/null || fail "new pair"
+new_exr=$(sum "$work/new/img.exr") new_png=$(sum "$work/new/img.png")
+[ "$new_png" != "$old_png" ] || fail "the new PNG equals the old one: the test would prove nothing"
+true & dead=$!; wait $dead
+t_exr=".img.exr.stipple-tmp-$host-$dead-0.exr" t_png=".img.png.stipple-tmp-$host-$dead-1.png"
+cp "$work/new/img.exr" "$work/out/$t_exr" && cp "$work/new/img.png" "$work/out/$t_png" || fail "planting"
+printf 'stipple-publish 1\n%d %d\n%s%s\n%d %d\n%s%s\nend\n' ${#t_exr} 7 "$t_exr" img.exr ${#t_png} 7 "$t_png" img.png \
+  > "$work/out/.img.exr.publish.stipple-tmp-$host-$dead-2.publish"
+mv "$work/out/$t_exr" "$work/out/img.exr"  # killed here: new EXR, old PNG
+"$exe" "$scene" --print-layout -o "$work/out/img.exr" > /dev/null || fail "the run after the interrupted publication"
+e=$(sum "$work/out/img.exr") p=$(sum "$work/out/img.png")
+[ "$e" = "$new_exr" ] && [ "$p" = "$new_png" ] ||
+  fail "after recovery: EXR $([ "$e" = "$new_exr" ] && echo new || echo other), PNG $([ "$p" = "$new_png" ] && echo new || echo old)"
+[ "$(temps)" -eq 0 ] || fail "recovery left temporaries or the journal: $(ls -a "$work/out")"
+echo "SIGKILL between the renames: the next run completed the new pair"
 echo "PASS"

@@ -48,15 +48,15 @@ struct Parser {
     yaml::StrictYaml yaml;
     const MatrixVocabulary& vocabulary;
 
-    [[noreturn]] void fail(const YAML::Node& node, const std::string& what) const {
+    [[noreturn]] void fail(const yaml::Node& node, const std::string& what) const {
         throw MatrixError(yaml.where(node) + ": " + what);
     }
 
-    void expectMap(const YAML::Node& node, const std::string& what) const {
+    void expectMap(const yaml::Node& node, const std::string& what) const {
         if (!node.IsMap()) fail(node, what + " must be a map");
     }
     // Unknown keys are errors: a typo must not silently become a default.
-    void onlyKeys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what) const {
+    void onlyKeys(const yaml::Node& map, const std::vector<std::string>& allowed, const std::string& what) const {
         try {
             yaml.onlyKeys(map, allowed, what);
         } catch (const yaml::Error& e) {
@@ -64,7 +64,7 @@ struct Parser {
         }
     }
     template <typename T>
-    T get(const YAML::Node& node, const std::string& what) const {
+    T get(const yaml::Node& node, const std::string& what) const {
         if (!node.IsScalar()) fail(node, what + " must be a scalar");
         if constexpr (std::is_same_v<T, std::string>) {
             return node.Scalar();
@@ -81,22 +81,22 @@ struct Parser {
             return T(v);
         }
     }
-    double positive(const YAML::Node& node, const std::string& what) const {
+    double positive(const yaml::Node& node, const std::string& what) const {
         double v = get<double>(node, what);
         if (!(v > 0)) fail(node, what + " must be > 0, got " + node.Scalar());
         return v;
     }
-    uint32_t spp(const YAML::Node& node, const std::string& what) const {
+    uint32_t spp(const yaml::Node& node, const std::string& what) const {
         long long v = get<long long>(node, what);
         if (v < 1 || v > (1ll << 24)) fail(node, what + " must be in [1, 16777216], got " + node.Scalar());
         return uint32_t(v);
     }
-    int dimension(const YAML::Node& node, const std::string& what) const {
+    int dimension(const yaml::Node& node, const std::string& what) const {
         long long v = get<long long>(node, what);
         if (v < 1 || v > 16384) fail(node, what + " must be in [1, 16384], got " + node.Scalar());
         return int(v);
     }
-    std::string pattern(const YAML::Node& node) const {
+    std::string pattern(const yaml::Node& node) const {
         auto p = get<std::string>(node, "pattern");
         const auto& known = vocabulary.patterns;
         // "<pattern>+blue-noise": the shim's screen-space blue-noise option on that pattern.
@@ -108,8 +108,8 @@ struct Parser {
                            kBlueNoise + ")");
         return p;
     }
-    const YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& what) const {
-        const YAML::Node n = map[key];
+    const yaml::Node required(const yaml::Node& map, const std::string& key, const std::string& what) const {
+        const yaml::Node n = map[key];
         if (!n) fail(map, what + " needs '" + key + "'");
         return n;
     }
@@ -117,9 +117,9 @@ struct Parser {
 
 // ---- the sections of a matrix, each read into m ------------------------------------------------------------------
 
-void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base, Matrix& m) {
+void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base, Matrix& m) {
     auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
-    const YAML::Node scenes = P.required(croot, "scenes", "the matrix");
+    const yaml::Node scenes = P.required(croot, "scenes", "the matrix");
     if (!scenes.IsSequence() || scenes.size() == 0) P.fail(scenes, "scenes must be a non-empty list");
     std::set<std::string> sceneNames; // a linear findScene per entry made a 15 MB matrix take minutes
     for (const auto& s : scenes) {
@@ -142,7 +142,7 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
                            "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
             }
             if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
-            if (const YAML::Node regions = s["regions"]) {
+            if (const yaml::Node regions = s["regions"]) {
                 if (!regions.IsSequence())
                     P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
                 for (const auto& rn : regions) {
@@ -150,7 +150,7 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
                     P.onlyKeys(rn, {"name", "rect"}, "a region");
                     Region rg;
                     rg.name = P.get<std::string>(P.required(rn, "name", "a region"), "region name");
-                    const YAML::Node rect = P.required(rn, "rect", "a region");
+                    const yaml::Node rect = P.required(rn, "rect", "a region");
                     if (!rect.IsSequence() || rect.size() != 4)
                         P.fail(rect, "rect must be [x0, y0, x1, y1], fractions of the image's width and height");
                     double v[4];
@@ -180,8 +180,8 @@ void parseScenes(const Parser& P, const YAML::Node& croot, const fs::path& base,
     }
 }
 
-void parsePatterns(const Parser& P, const YAML::Node& croot, Matrix& m) {
-    const YAML::Node patterns = P.required(croot, "patterns", "the matrix");
+void parsePatterns(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    const yaml::Node patterns = P.required(croot, "patterns", "the matrix");
     if (!patterns.IsSequence() || patterns.size() == 0) P.fail(patterns, "patterns must be a non-empty list");
     for (const auto& p : patterns) {
         auto name = P.pattern(p);
@@ -191,8 +191,8 @@ void parsePatterns(const Parser& P, const YAML::Node& croot, Matrix& m) {
     }
 }
 
-void parseSpp(const Parser& P, const YAML::Node& croot, Matrix& m) {
-    const YAML::Node spp = P.required(croot, "spp", "the matrix");
+void parseSpp(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    const yaml::Node spp = P.required(croot, "spp", "the matrix");
     if (spp.IsScalar())
         m.spp.push_back(P.spp(spp, "spp"));
     else if (spp.IsSequence() && spp.size() > 0)
@@ -204,8 +204,8 @@ void parseSpp(const Parser& P, const YAML::Node& croot, Matrix& m) {
 }
 
 // K (seeds 1..K) or an explicit list.
-void parseSeeds(const Parser& P, const YAML::Node& croot, Matrix& m) {
-    const YAML::Node seeds = P.required(croot, "seeds", "the matrix");
+void parseSeeds(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    const yaml::Node seeds = P.required(croot, "seeds", "the matrix");
     if (seeds.IsScalar()) {
         long long k = P.get<long long>(seeds, "seeds");
         if (k < 4 || k > 1000)
@@ -224,9 +224,9 @@ void parseSeeds(const Parser& P, const YAML::Node& croot, Matrix& m) {
 }
 
 // The reference's settings, and its spp against the cells' (per scene too).
-void parseReference(const Parser& P, const YAML::Node& croot, Matrix& m) {
-    const YAML::Node scenes = croot["scenes"];
-    if (const YAML::Node r = croot["reference"]) {
+void parseReference(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    const yaml::Node scenes = croot["scenes"];
+    if (const yaml::Node r = croot["reference"]) {
         P.expectMap(r, "reference");
         P.onlyKeys(r, {"pattern", "spp", "seed"}, "reference");
         if (r["pattern"]) m.reference.pattern = P.pattern(r["pattern"]);
@@ -256,11 +256,11 @@ void parseReference(const Parser& P, const YAML::Node& croot, Matrix& m) {
     }
 }
 
-void parseCrop(const Parser& P, const YAML::Node& croot, Matrix& m) {
-    if (const YAML::Node c = croot["crop"]) {
+void parseCrop(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    if (const yaml::Node c = croot["crop"]) {
         P.expectMap(c, "crop");
         P.onlyKeys(c, {"x", "y", "size", "scale", "spp"}, "crop");
-        auto fraction = [&](const YAML::Node& n, const char* what) {
+        auto fraction = [&](const yaml::Node& n, const char* what) {
             double v = P.get<double>(n, what);
             if (!(v >= 0 && v <= 1)) P.fail(n, std::string(what) + " is a fraction of the image, in [0, 1]");
             return v;
@@ -277,18 +277,18 @@ void parseCrop(const Parser& P, const YAML::Node& croot, Matrix& m) {
     }
 }
 
-void parseBaseline(const Parser& P, const YAML::Node& croot, Matrix& m) {
-    if (const YAML::Node b = croot["baseline"]) {
+void parseBaseline(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    if (const yaml::Node b = croot["baseline"]) {
         P.expectMap(b, "baseline");
         P.onlyKeys(b, {"time_factor"}, "baseline");
         if (b["time_factor"]) m.baselineTimeFactor = P.positive(b["time_factor"], "time_factor");
     }
 }
 
-void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
+void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
     std::set<std::string> sceneNames; // a linear findScene per check made a matrix of many checks take minutes
     for (const auto& ms : m.scenes) sceneNames.insert(ms.name);
-    auto sceneRef = [&](const YAML::Node& n, bool allowAll) {
+    auto sceneRef = [&](const yaml::Node& n, bool allowAll) {
         auto s = P.get<std::string>(n, "scene");
         if (allowAll && s == "all") return s;
         if (!sceneNames.count(s)) {
@@ -301,25 +301,25 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
         }
         return s;
     };
-    auto matrixPattern = [&](const YAML::Node& n) {
+    auto matrixPattern = [&](const yaml::Node& n) {
         auto p = P.pattern(n);
         if (std::find(m.patterns.begin(), m.patterns.end(), p) == m.patterns.end())
             P.fail(n, "pattern '" + p + "' is not among the matrix's patterns (" + joined(m.patterns) + ")");
         return p;
     };
-    auto matrixSpp = [&](const YAML::Node& n, const char* what) {
+    auto matrixSpp = [&](const yaml::Node& n, const char* what) {
         auto v = P.spp(n, what);
         if (std::find(m.spp.begin(), m.spp.end(), v) == m.spp.end())
             P.fail(n, std::string(what) + " " + n.Scalar() + " is not among the matrix's spp");
         return v;
     };
-    auto notSeparated = [&](const YAML::Node& c, bool fails) {
+    auto notSeparated = [&](const yaml::Node& c, bool fails) {
         if (!c["not_separated"]) return fails;
         auto v = P.get<std::string>(c["not_separated"], "not_separated");
         if (v != "fail" && v != "pass") P.fail(c["not_separated"], "not_separated must be fail or pass");
         return v == "fail";
     };
-    if (const YAML::Node checks = croot["checks"]) {
+    if (const yaml::Node checks = croot["checks"]) {
         if (!checks.IsSequence()) P.fail(checks, "checks must be a list");
         for (const auto& c : checks) {
             P.expectMap(c, "a check");
@@ -332,7 +332,7 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
                 k.scene = sceneRef(P.required(c, "scene", "an ordering check"), true);
                 k.sppMin = c["spp_min"] ? P.spp(c["spp_min"], "spp_min") : m.spp.back();
                 if (k.sppMin > m.spp.back()) P.fail(c["spp_min"], "spp_min is above every spp of the matrix");
-                const YAML::Node order = P.required(c, "order", "an ordering check");
+                const yaml::Node order = P.required(c, "order", "an ordering check");
                 if (!order.IsSequence() || order.size() < 2)
                     P.fail(order, "order must list at least two patterns, best first");
                 for (const auto& p : order) k.order.push_back(matrixPattern(p));
@@ -385,7 +385,7 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
                         P.fail(c["region"], "unknown region '" + k.region + "' of scene " + k.scene +
                                                 " (its regions: " + joined(names) + ")");
                 }
-                const YAML::Node order = P.required(c, "order", what);
+                const yaml::Node order = P.required(c, "order", what);
                 if (!order.IsSequence() || order.size() < 2)
                     P.fail(order, "order must list at least two patterns, most efficient first");
                 for (const auto& p : order) k.order.push_back(matrixPattern(p));
@@ -405,14 +405,14 @@ void parseChecks(const Parser& P, const YAML::Node& croot, Matrix& m) {
 
 Matrix parseMatrix(const std::string& text, const std::string& path, const MatrixVocabulary& vocabulary) {
     Parser P{yaml::StrictYaml(path), vocabulary};
-    YAML::Node root;
+    yaml::Node root;
     try {
         root = P.yaml.parse(text);
     } catch (const yaml::Error& e) {
         throw MatrixError(e.what());
     }
     if (!root || !root.IsMap()) throw MatrixError(path + ":1:1: a matrix must be a YAML map");
-    const YAML::Node& croot = root;
+    const yaml::Node& croot = root;
     P.onlyKeys(
         croot,
         {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop", "baseline", "checks"},

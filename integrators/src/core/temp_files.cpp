@@ -1,5 +1,7 @@
 #include <stipple/render/temp_files.h>
 
+#include <stipple/render/publish_journal.h>
+
 #include <atomic>
 #include <cstring>
 #include <cerrno>
@@ -9,6 +11,7 @@
 #include <mutex>
 #include <set>
 #include <thread>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -128,23 +131,32 @@ void installTempCleanupOnSignals() {
 size_t sweepStaleTemps(const std::string& dir) {
     static const std::string host = hostName();
     std::error_code ec;
-    size_t removed = 0;
     const std::time_t now = std::time(nullptr);
+    std::vector<fs::path> stale;
     for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
         const std::string name = it->path().filename().string();
         std::string h;
         long pid = 0;
         if (!parseTempName(name, h, pid)) continue;
-        bool stale;
+        bool gone;
         if (h == host) {
-            stale = pid != getpid() && kill(pid_t(pid), 0) != 0 && errno == ESRCH;
+            gone = pid != getpid() && kill(pid_t(pid), 0) != 0 && errno == ESRCH;
         } else {
             struct stat st {};
-            stale = lstat(it->path().c_str(), &st) == 0 && now - st.st_mtime > 24 * 3600;
+            gone = lstat(it->path().c_str(), &st) == 0 && now - st.st_mtime > 24 * 3600;
         }
-        if (!stale) continue;
+        if (gone) stale.push_back(it->path());
+    }
+    // A dead process's publish journal first: it renames (or removes) temporaries the plain sweep would remove.
+    size_t removed = 0;
+    for (const fs::path& p : stale)
+        if (isPublishJournalName(p.filename().string())) {
+            recoverPublishJournal(p.string());
+            ++removed;
+        }
+    for (const fs::path& p : stale) {
         std::error_code rec;
-        if (fs::remove_all(it->path(), rec) > 0 && !rec) ++removed;
+        if (!isPublishJournalName(p.filename().string()) && fs::remove_all(p, rec) > 0 && !rec) ++removed;
     }
     return removed;
 }

@@ -1,5 +1,6 @@
 #include "film/output_publish.h"
 
+#include <stipple/render/publish_journal.h>
 #include <stipple/render/temp_files.h>
 
 #include <filesystem>
@@ -28,18 +29,9 @@ std::string publishRenderOutputs(const std::string& exrPath, const Image& image,
     TempPath exrTemp(exrPath), pngTemp(pngPath);
     writeExr(exrTemp.path(), image, metadata);
     writePng(pngTemp.path(), image, exposureStops);
-    SignalHold hold; // both renames or, on a signal, neither (the temporaries are then removed)
-    std::error_code ec;
-    fs::rename(exrTemp.path(), exrPath, ec);
-    if (ec) throw std::runtime_error("cannot rename '" + exrTemp.path() + "' to '" + exrPath + "': " + ec.message());
+    // Journaled: a SIGKILL between the two renames is finished (or undone) by the next run's sweep.
+    renameTogether({{exrTemp.path(), exrPath}, {pngTemp.path(), pngPath}});
     exrTemp.release();
-    fs::rename(pngTemp.path(), pngPath, ec);
-    if (ec) {
-        // The new EXR is in place but its PNG is not: remove the stale PNG so no mismatched pair remains.
-        std::error_code ignored;
-        fs::remove(pngPath, ignored);
-        throw std::runtime_error("cannot rename '" + pngTemp.path() + "' to '" + pngPath + "': " + ec.message());
-    }
     pngTemp.release();
     return pngPath;
 }

@@ -1,6 +1,7 @@
 // Publishing one render's outputs together: the EXR and its PNG preview are both written to temporaries beside
-// their targets and renamed into place one after the other under a SignalHold, so a SIGINT / SIGTERM never
-// leaves a new EXR beside an old PNG; on any failure both temporaries are removed and the old pair stays.
+// their targets and renamed into place by renameTogether (publish_journal.h): a SIGINT / SIGTERM waits for both
+// renames, and a SIGKILL between them is completed by the next run's sweep, so a new EXR never stays beside an
+// old PNG; when writing fails both temporaries are removed and the old pair stays.
 #pragma once
 
 #include <stipple/render/renderer.h>

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace stipple::render {
 
@@ -25,35 +26,35 @@ public:
 
 private:
     // ---- error helpers ---------------------------------------------------------------------------------------
-    std::string where(const YAML::Node& n) const { return yaml::StrictYaml(file_).where(n); }
-    static std::string show(const YAML::Node& n) {
+    std::string where(const yaml::Node& n) const { return yaml::StrictYaml(file_).where(n); }
+    static std::string show(const yaml::Node& n) {
         if (!n || n.IsNull()) return "nothing";
         if (n.IsScalar()) return "'" + n.Scalar() + "'";
         if (n.IsSequence()) return "a list";
         if (n.IsMap()) return "a map";
         return "?";
     }
-    [[noreturn]] void fail(const YAML::Node& n, const std::string& key, const std::string& expected) const {
+    [[noreturn]] void fail(const yaml::Node& n, const std::string& key, const std::string& expected) const {
         throw SceneError(where(n) + ": key '" + key + "': expected " + expected + ", got " + show(n));
     }
-    [[noreturn]] void failMsg(const YAML::Node& n, const std::string& key, const std::string& msg) const {
+    [[noreturn]] void failMsg(const yaml::Node& n, const std::string& key, const std::string& msg) const {
         throw SceneError(where(n) + ": key '" + key + "': " + msg);
     }
-    void checkKeys(const YAML::Node& map, const std::string& ctx, const std::vector<std::string>& allowed) const {
+    void checkKeys(const yaml::Node& map, const std::string& ctx, const std::vector<std::string>& allowed) const {
         try {
             yaml::StrictYaml(file_).onlyKeys(map, allowed, ctx);
         } catch (const yaml::Error& e) {
             throw SceneError(e.what());
         }
     }
-    YAML::Node require(const YAML::Node& map, const std::string& key, const std::string& ctx) const {
-        YAML::Node n = map[key];
+    yaml::Node require(const yaml::Node& map, const std::string& key, const std::string& ctx) const {
+        yaml::Node n = map[key];
         if (!n) throw SceneError(where(map) + ": key '" + key + "': required in " + ctx + " but missing");
         return n;
     }
 
     // ---- typed readers ---------------------------------------------------------------------------------------
-    double number(const YAML::Node& n, const std::string& key) const {
+    double number(const yaml::Node& n, const std::string& key) const {
         if (!n.IsScalar()) fail(n, key, "a number");
         double v = 0;
         switch (yaml::StrictYaml::parseNumber(n, v)) {
@@ -63,18 +64,18 @@ private:
         }
         fail(n, key, "a number");
     }
-    float numberIn(const YAML::Node& n, const std::string& key, double lo, double hi, const std::string& range) const {
+    float numberIn(const yaml::Node& n, const std::string& key, double lo, double hi, const std::string& range) const {
         double v = number(n, key);
         if (v < lo || v > hi) fail(n, key, "a number " + range);
         return float(v);
     }
-    long long integer(const YAML::Node& n, const std::string& key, long long lo, long long hi) const {
+    long long integer(const yaml::Node& n, const std::string& key, long long lo, long long hi) const {
         long long v = 0;
         if (!yaml::StrictYaml::parseInteger(n, v)) fail(n, key, "an integer");
         if (v < lo || v > hi) fail(n, key, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return v;
     }
-    bool boolean(const YAML::Node& n, const std::string& key) const {
+    bool boolean(const yaml::Node& n, const std::string& key) const {
         if (n.IsScalar()) {
             const std::string& s = n.Scalar();
             if (s == "true" || s == "yes" || s == "on") return true;
@@ -82,11 +83,11 @@ private:
         }
         fail(n, key, "true or false");
     }
-    std::string string(const YAML::Node& n, const std::string& key) const {
+    std::string string(const yaml::Node& n, const std::string& key) const {
         if (!n.IsScalar() || n.Scalar().empty()) fail(n, key, "a non-empty string");
         return n.Scalar();
     }
-    std::string oneOf(const YAML::Node& n, const std::string& key, const std::vector<std::string>& options) const {
+    std::string oneOf(const yaml::Node& n, const std::string& key, const std::vector<std::string>& options) const {
         std::string s = n.IsScalar() ? n.Scalar() : "";
         for (const auto& o : options)
             if (s == o) return s;
@@ -95,12 +96,12 @@ private:
             list += (i ? (i + 1 == options.size() ? " or " : ", ") : "") + options[i];
         fail(n, key, list);
     }
-    Vec3 vec3(const YAML::Node& n, const std::string& key) const {
+    Vec3 vec3(const yaml::Node& n, const std::string& key) const {
         if (!n.IsSequence() || n.size() != 3) fail(n, key, "a list of 3 numbers [x, y, z]");
         return Vec3(float(number(n[0], key)), float(number(n[1], key)), float(number(n[2], key)));
     }
     // A colour: [r, g, b] or one number for grey; each component in [lo, hi].
-    Spectrum spectrum(const YAML::Node& n, const std::string& key, double lo, double hi) const {
+    Spectrum spectrum(const yaml::Node& n, const std::string& key, double lo, double hi) const {
         std::string range = hi < 1e30 ? "in [" + fmt(lo) + ", " + fmt(hi) + "]" : ">= " + fmt(lo);
         if (n.IsScalar()) {
             float v = numberIn(n, key, lo, hi, range);
@@ -118,26 +119,26 @@ private:
     }
 
     // ---- sections --------------------------------------------------------------------------------------------
-    void parseRender(const YAML::Node& n);
-    void parseCamera(const YAML::Node& n);
-    void parseMaterials(const YAML::Node& n);
-    void parseObjects(const YAML::Node& n);
-    void parseShapeList(const YAML::Node& list, ShapeGroup& group, bool inObject, const std::string& listKey);
-    void parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject);
-    void allowShapeKeys(const YAML::Node& n, const std::string& ctx, std::initializer_list<const char*> keys) const;
-    void parseInstance(const YAML::Node& n, const std::string& ctx, const std::string& origin);
-    TriangleMesh parseMeshGeometry(const YAML::Node& n, const std::string& type, const std::string& ctx,
+    void parseRender(const yaml::Node& n);
+    void parseCamera(const yaml::Node& n);
+    void parseMaterials(const yaml::Node& n);
+    void parseObjects(const yaml::Node& n);
+    void parseShapeList(const yaml::Node& list, ShapeGroup& group, bool inObject, const std::string& listKey);
+    void parseShape(const yaml::Node& n, ShapeGroup& group, bool inObject);
+    void allowShapeKeys(const yaml::Node& n, const std::string& ctx, std::initializer_list<const char*> keys) const;
+    void parseInstance(const yaml::Node& n, const std::string& ctx, const std::string& origin);
+    TriangleMesh parseMeshGeometry(const yaml::Node& n, const std::string& type, const std::string& ctx,
                                    bool& parallelogramCandidate);
     void addMesh(TriangleMesh tm, const Transform& xf, int material, const Emission& emission,
                  const std::string& origin, bool parallelogramCandidate, ShapeGroup& group);
-    Transform parseTransform(const YAML::Node& n) const;
-    void include(const YAML::Node& n);
+    Transform parseTransform(const yaml::Node& n) const;
+    void include(const yaml::Node& n);
     std::string resolve(const std::string& rel) const {
         fs::path p(rel);
         if (p.is_relative()) p = fs::path(file_).parent_path() / p;
         return p.lexically_normal().string();
     }
-    YAML::Node loadYaml(const std::string& path, const YAML::Node* from, const std::string& key);
+    yaml::Node loadYaml(const std::string& path, const yaml::Node* from, const std::string& key);
 
     SceneDescription& desc_;
     std::string file_;               // the file being parsed (for messages)
@@ -146,7 +147,7 @@ private:
     std::map<std::string, int> objectIndex_;
 };
 
-YAML::Node Loader::loadYaml(const std::string& path, const YAML::Node* from, const std::string& key) {
+yaml::Node Loader::loadYaml(const std::string& path, const yaml::Node* from, const std::string& key) {
     std::string text;
     try {
         text = readFileBounded(path, limits::kMaxYamlFileBytes, "scene file");
@@ -155,7 +156,7 @@ YAML::Node Loader::loadYaml(const std::string& path, const YAML::Node* from, con
         throw SceneError(e.what());
     }
     try {
-        YAML::Node root = yaml::StrictYaml(path).parse(text);
+        yaml::Node root = yaml::StrictYaml(path).parse(text);
         desc_.files.push_back(path);
         return root;
     } catch (const yaml::Error& e) {
@@ -166,7 +167,7 @@ YAML::Node Loader::loadYaml(const std::string& path, const YAML::Node* from, con
 void Loader::loadMain(const std::string& path) {
     file_ = path;
     desc_.path = path;
-    YAML::Node root = loadYaml(path, nullptr, "");
+    yaml::Node root = loadYaml(path, nullptr, "");
     stack_.push_back(fs::absolute(path).lexically_normal().string());
     if (!root.IsMap())
         throw SceneError(where(root) +
@@ -185,7 +186,7 @@ void Loader::loadMain(const std::string& path) {
     checkSceneExtent(desc_);
 }
 
-void Loader::parseRender(const YAML::Node& n) {
+void Loader::parseRender(const yaml::Node& n) {
     if (!n.IsMap()) fail(n, "render", "a map");
     checkKeys(n, "render", {"integrator", "max_depth", "width", "height", "spp", "light_samples", "light_selection"});
     RenderSettings& s = desc_.settings;
@@ -204,7 +205,7 @@ void Loader::parseRender(const YAML::Node& n) {
         s.uniformLightSelection = oneOf(n["light_selection"], "light_selection", {"power", "uniform"}) == "uniform";
 }
 
-void Loader::parseCamera(const YAML::Node& n) {
+void Loader::parseCamera(const yaml::Node& n) {
     if (!n.IsMap()) fail(n, "camera", "a map");
     checkKeys(n, "camera", {"type", "position", "look_at", "up", "fov", "lens_radius", "focus_distance"});
     CameraDesc& c = desc_.camera;
@@ -230,11 +231,11 @@ void Loader::parseCamera(const YAML::Node& n) {
     }
 }
 
-void Loader::parseMaterials(const YAML::Node& n) {
+void Loader::parseMaterials(const yaml::Node& n) {
     if (!n.IsMap()) fail(n, "materials", "a map of name -> material");
     for (auto it = n.begin(); it != n.end(); ++it) {
         std::string name = it->first.Scalar();
-        const YAML::Node m = it->second;
+        const yaml::Node m = it->second;
         if (!m.IsMap()) fail(m, name, "a material map with a 'type'");
         std::string type = oneOf(require(m, "type", "material '" + name + "'"), "type",
                                  {"diffuse", "plastic", "conductor", "mirror", "dielectric"});
@@ -276,7 +277,7 @@ void Loader::parseMaterials(const YAML::Node& n) {
     }
 }
 
-void Loader::parseObjects(const YAML::Node& n) {
+void Loader::parseObjects(const yaml::Node& n) {
     if (!n.IsMap()) fail(n, "objects", "a map of name -> list of shapes");
     for (auto it = n.begin(); it != n.end(); ++it) {
         std::string name = it->first.Scalar();
@@ -289,21 +290,21 @@ void Loader::parseObjects(const YAML::Node& n) {
     }
 }
 
-void Loader::parseShapeList(const YAML::Node& list, ShapeGroup& group, bool inObject, const std::string& listKey) {
+void Loader::parseShapeList(const yaml::Node& list, ShapeGroup& group, bool inObject, const std::string& listKey) {
     if (!list.IsSequence()) fail(list, listKey, "a list of shapes");
-    for (const YAML::Node& s : list) parseShape(s, group, inObject);
+    for (const yaml::Node& s : list) parseShape(s, group, inObject);
 }
 
-Transform Loader::parseTransform(const YAML::Node& n) const {
+Transform Loader::parseTransform(const yaml::Node& n) const {
     if (!n.IsSequence()) fail(n, "transform", "a list of {translate|rotate|scale|matrix: ...} steps");
     Transform xf;
-    for (const YAML::Node& step : n) {
+    for (const yaml::Node& step : n) {
         if (!step.IsMap() || step.size() != 1)
             fail(step, "transform",
                  "one of {translate: [x,y,z]}, "
                  "{rotate: [degrees, [axis]]}, {scale: s|[x,y,z]}, {matrix: [16 numbers]}");
         std::string op = step.begin()->first.Scalar();
-        const YAML::Node v = step.begin()->second;
+        const yaml::Node v = step.begin()->second;
         Transform t;
         if (op == "translate") {
             t = Transform::translate(vec3(v, "translate"));
@@ -333,7 +334,7 @@ Transform Loader::parseTransform(const YAML::Node& n) const {
     return xf;
 }
 
-void Loader::include(const YAML::Node& n) {
+void Loader::include(const yaml::Node& n) {
     checkKeys(n, "an include", {"type", "file"});
     std::string rel = string(require(n, "file", "an include"), "file");
     std::string path = resolve(rel);
@@ -344,8 +345,8 @@ void Loader::include(const YAML::Node& n) {
     if (stack_.size() >= size_t(limits::kMaxIncludeDepth))
         failMsg(n["file"], "file",
                 "includes nested deeper than the limit of " + std::to_string(limits::kMaxIncludeDepth) + " files");
-    YAML::Node fileNode = n["file"];
-    YAML::Node root = loadYaml(path, &fileNode, "file");
+    yaml::Node fileNode = n["file"];
+    yaml::Node root = loadYaml(path, &fileNode, "file");
     std::string saved = file_;
     file_ = path;
     stack_.push_back(canonical);
@@ -357,7 +358,7 @@ void Loader::include(const YAML::Node& n) {
     file_ = saved;
 }
 
-void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
+void Loader::parseShape(const yaml::Node& n, ShapeGroup& group, bool inObject) {
     if (!n.IsMap()) fail(n, "shapes", "a shape map with a 'type'");
     std::string type = oneOf(require(n, "type", "a shape"), "type",
                              {"quad", "mesh", "box", "sphere", "cylinder", "lathe", "instance", "include"});
@@ -407,14 +408,14 @@ void Loader::parseShape(const YAML::Node& n, ShapeGroup& group, bool inObject) {
     addMesh(std::move(tm), xf, mit->second, emission, origin, parallelogramCandidate, group);
 }
 
-void Loader::allowShapeKeys(const YAML::Node& n, const std::string& ctx,
+void Loader::allowShapeKeys(const yaml::Node& n, const std::string& ctx,
                             std::initializer_list<const char*> keys) const {
     std::vector<std::string> allowed{"type", "material", "emission", "two_sided", "transform"};
     allowed.insert(allowed.end(), keys.begin(), keys.end());
     checkKeys(n, ctx, allowed);
 }
 
-void Loader::parseInstance(const YAML::Node& n, const std::string& ctx, const std::string& origin) {
+void Loader::parseInstance(const yaml::Node& n, const std::string& ctx, const std::string& origin) {
     checkKeys(n, ctx, {"type", "object", "transform"});
     std::string obj = string(require(n, "object", ctx), "object");
     auto it = objectIndex_.find(obj);
@@ -427,12 +428,12 @@ void Loader::parseInstance(const YAML::Node& n, const std::string& ctx, const st
 }
 
 // The triangles of a quad, mesh, box, cylinder or lathe, in object space.
-TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& type, const std::string& ctx,
+TriangleMesh Loader::parseMeshGeometry(const yaml::Node& n, const std::string& type, const std::string& ctx,
                                        bool& parallelogramCandidate) {
     TriangleMesh tm;
     if (type == "quad") {
         allowShapeKeys(n, ctx, {"vertices"});
-        YAML::Node v = require(n, "vertices", ctx);
+        yaml::Node v = require(n, "vertices", ctx);
         if (!v.IsSequence() || v.size() != 4) fail(v, "vertices", "a list of 4 points");
         Vec3 p[4];
         for (int i = 0; i < 4; ++i) p[i] = vec3(v[i], "vertices");
@@ -456,12 +457,12 @@ TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& t
             }
             desc_.files.push_back(path);
         } else {
-            YAML::Node v = require(n, "vertices", ctx), idx = require(n, "indices", ctx);
+            yaml::Node v = require(n, "vertices", ctx), idx = require(n, "indices", ctx);
             if (!v.IsSequence() || v.size() < 3) fail(v, "vertices", "a list of at least 3 points");
-            for (const YAML::Node& p : v) tm.positions.push_back(vec3(p, "vertices"));
+            for (const yaml::Node& p : v) tm.positions.push_back(vec3(p, "vertices"));
             if (!idx.IsSequence() || idx.size() == 0 || idx.size() % 3 != 0)
                 fail(idx, "indices", "a flat list of vertex indices, 3 per triangle");
-            for (const YAML::Node& i : idx)
+            for (const yaml::Node& i : idx)
                 tm.indices.push_back(uint32_t(integer(i, "indices", 0, (long long)tm.positions.size() - 1)));
         }
     } else if (type == "box") {
@@ -481,10 +482,10 @@ TriangleMesh Loader::parseMeshGeometry(const YAML::Node& n, const std::string& t
         tm = makeCylinder(base, axis, h, r, seg, caps);
     } else if (type == "lathe") {
         allowShapeKeys(n, ctx, {"profile", "segments"});
-        YAML::Node prof = require(n, "profile", ctx);
+        yaml::Node prof = require(n, "profile", ctx);
         if (!prof.IsSequence() || prof.size() < 2) fail(prof, "profile", "a list of at least 2 [radius, height] pairs");
         std::vector<std::pair<float, float>> pts;
-        for (const YAML::Node& p : prof) {
+        for (const yaml::Node& p : prof) {
             if (!p.IsSequence() || p.size() != 2) fail(p, "profile", "a [radius, height] pair");
             pts.push_back({numberIn(p[0], "profile", 0, 1e30, "(radius) >= 0"), float(number(p[1], "profile"))});
         }
@@ -528,13 +529,7 @@ void Loader::addMesh(TriangleMesh tm, const Transform& xf, int material, const E
 SceneDescription loadSceneDescription(const std::string& path) {
     SceneDescription desc;
     Loader loader(desc);
-    try {
-        loader.loadMain(path);
-    } catch (const YAML::Exception& e) {
-        // Any yaml-cpp failure not caught above still names the place.
-        throw SceneError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " +
-                         e.msg);
-    }
+    loader.loadMain(path);
     return desc;
 }
 

@@ -3,7 +3,7 @@
 // ones, and one number parser (the whole scalar, finite) behind every numeric field.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
+#include <stipple/yaml/document.h>
 
 #include <stdexcept>
 #include <string>
@@ -21,30 +21,29 @@ class StrictYaml {
 public:
     explicit StrictYaml(std::string file) : file_(std::move(file)) {}
 
-    // Parses `text` (named file() in messages) and rejects duplicate keys anywhere in it.
-    YAML::Node parse(const std::string& text) const;
+    // Parses `text` (named file() in messages) into a compact Document; duplicate keys anywhere are errors.
+    Node parse(const std::string& text) const;
     // Reads and parses the file named file().
-    YAML::Node load() const;
+    Node load() const;
 
     const std::string& file() const { return file_; }
     // "file:line:column" of the node, or "file" when it has no position.
-    std::string where(const YAML::Node& node) const;
-    [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;
+    std::string where(const Node& node) const;
+    [[noreturn]] void fail(const Node& node, const std::string& message) const;
 
     // A map's keys must be plain names from `allowed`; otherwise "unknown key 'k' in <context> (allowed: ...)".
-    void onlyKeys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& context) const;
+    void onlyKeys(const Node& map, const std::vector<std::string>& allowed, const std::string& context) const;
 
     // The one number parser: the whole scalar must be a finite number (no trailing text, no nan/inf).
     // Sets `out` only when it returns Number::Ok.
     enum class Number { Ok, NotANumber, NotFinite };
-    static Number parseNumber(const YAML::Node& node, double& out);
+    static Number parseNumber(const Node& node, double& out);
     // A whole-scalar integer in [lo, hi]; false otherwise.
-    static bool parseInteger(const YAML::Node& node, long long& out);
+    static bool parseInteger(const Node& node, long long& out);
 
     static std::string joined(const std::vector<std::string>& names);
 
 private:
-    void rejectDuplicateKeys(const YAML::Node& node) const;
     std::string file_;
 };
 

@@ -1,0 +1,174 @@
+// An EXR and its PNG are published together or not at all, even when the process is killed between the two
+// renames. The states a SIGKILL can leave are built exactly: a child process writes the new pair to temporaries
+// and the journal with the real code, does some of the renames and ends without cleaning up (as SIGKILL would);
+// the next sweep of the folder must leave the new pair (or, when something removed a temporary, no mismatched
+// pair), and no temporary or journal.
+#define BOOST_TEST_MODULE publish_journal
+#include <boost/test/unit_test.hpp>
+
+#include <stipple/render/publish_journal.h>
+#include <stipple/render/temp_files.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace stipple::render;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Folder {
+    fs::path dir;
+    explicit Folder(const std::string& name) {
+        dir = fs::temp_directory_path() / ("stipple-publish-" + std::to_string(getpid())) / name;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        write("img.exr", "old exr");
+        write("img.png", "old png");
+    }
+    ~Folder() {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+    void write(const std::string& name, const std::string& text) const { std::ofstream(dir / name) << text; }
+    std::string read(const std::string& name) const {
+        std::ifstream in(dir / name);
+        if (!in) return "(missing)";
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    std::string listing() const {
+        std::set<std::string> names;
+        for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+        std::string s;
+        for (const auto& n : names) s += n + " ";
+        return s;
+    }
+    std::string exr() const { return (dir / "img.exr").string(); }
+    std::string png() const { return (dir / "img.png").string(); }
+};
+
+// Runs `interrupted` in a child that writes the new pair to temporaries and then ends with _exit: no
+// destructor, no cleanup, as after SIGKILL. Its pid is gone when this returns.
+void inDeadChild(const Folder& f, const std::function<void(const std::vector<PendingRename>&)>& interrupted) {
+    const pid_t pid = fork();
+    BOOST_REQUIRE(pid >= 0);
+    if (pid == 0) {
+        const std::vector<PendingRename> renames{{tempPathBeside(f.exr()), f.exr()},
+                                                 {tempPathBeside(f.png()), f.png()}};
+        std::ofstream(renames[0].temp) << "new exr";
+        std::ofstream(renames[1].temp) << "new png";
+        interrupted(renames);
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    BOOST_REQUIRE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(killed_between_the_renames_is_rolled_forward) {
+    Folder f("between");
+    inDeadChild(f, [](const std::vector<PendingRename>& r) {
+        writePublishJournal(r);
+        fs::rename(r[0].temp, r[0].target); // the EXR is new, the PNG still old
+    });
+    BOOST_TEST(f.read("img.exr") == "new exr");
+    BOOST_TEST(f.read("img.png") == "old png");
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("img.exr") == "new exr");
+    BOOST_TEST(f.read("img.png") == "new png");
+    BOOST_TEST(f.listing() == "img.exr img.png ", f.listing());
+}
+
+BOOST_AUTO_TEST_CASE(killed_before_the_renames_is_rolled_forward) {
+    Folder f("before");
+    inDeadChild(f, [](const std::vector<PendingRename>& r) { writePublishJournal(r); });
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("img.exr") == "new exr");
+    BOOST_TEST(f.read("img.png") == "new png");
+    BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing());
+}
+
+BOOST_AUTO_TEST_CASE(killed_after_the_renames_leaves_the_new_pair) {
+    Folder f("after");
+    inDeadChild(f, [](const std::vector<PendingRename>& r) {
+        writePublishJournal(r);
+        for (const auto& x : r) fs::rename(x.temp, x.target);
+    });
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("img.exr") == "new exr");
+    BOOST_TEST(f.read("img.png") == "new png");
+    BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing());
+}
+
+BOOST_AUTO_TEST_CASE(killed_before_the_journal_keeps_the_old_pair) {
+    Folder f("nojournal");
+    inDeadChild(f, [](const std::vector<PendingRename>&) {});
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("img.exr") == "old exr");
+    BOOST_TEST(f.read("img.png") == "old png");
+    BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing());
+}
+
+BOOST_AUTO_TEST_CASE(a_lost_temporary_leaves_no_mismatched_pair) {
+    // The PNG's temporary disappeared (not by a rename: the EXR's is still there), so the renames cannot be
+    // finished: rolled back, and the old EXR goes too rather than stay beside a PNG that may be new.
+    Folder g("lost");
+    inDeadChild(g, [](const std::vector<PendingRename>& r) {
+        writePublishJournal(r);
+        fs::remove(r[1].temp);
+    });
+    sweepStaleTemps(g.dir.string());
+    BOOST_TEST(g.read("img.exr") == "(missing)");
+    BOOST_TEST(g.read("img.png") == "old png");
+    BOOST_TEST(g.listing().find("stipple-tmp") == std::string::npos, g.listing());
+}
+
+BOOST_AUTO_TEST_CASE(a_live_process_journal_is_left_alone) {
+    Folder f("live");
+    const std::vector<PendingRename> r{{tempPathBeside(f.exr()), f.exr()}, {tempPathBeside(f.png()), f.png()}};
+    std::ofstream(r[0].temp) << "new exr";
+    std::ofstream(r[1].temp) << "new png";
+    const std::string journal = writePublishJournal(r);
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(fs::exists(journal));
+    BOOST_TEST(f.read("img.png") == "old png");
+    fs::remove(journal);
+}
+
+BOOST_AUTO_TEST_CASE(a_journal_naming_other_folders_is_not_followed) {
+    Folder f("evil");
+    f.write("secret", "keep");
+    inDeadChild(f, [&](const std::vector<PendingRename>&) {
+        // A journal that would rename a file from outside the folder over one of its own.
+        const std::string journal = tempPathBeside(f.exr() + ".publish");
+        const std::string temp = "../" + f.dir.filename().string() + "/secret", target = "img.exr";
+        std::ofstream(journal) << "stipple-publish 1\n"
+                               << temp.size() << " " << target.size() << "\n"
+                               << temp << target << "\nend\n";
+    });
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("secret") == "keep");
+    BOOST_TEST(f.read("img.exr") == "old exr");
+    BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing());
+}
+
+BOOST_AUTO_TEST_CASE(rename_together_publishes_both_and_leaves_no_journal) {
+    Folder f("normal");
+    const std::vector<PendingRename> r{{tempPathBeside(f.exr()), f.exr()}, {tempPathBeside(f.png()), f.png()}};
+    std::ofstream(r[0].temp) << "new exr";
+    std::ofstream(r[1].temp) << "new png";
+    renameTogether(r);
+    BOOST_TEST(f.read("img.exr") == "new exr");
+    BOOST_TEST(f.read("img.png") == "new png");
+    BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing());
+}
