@@ -32,8 +32,13 @@ done
 
 rm -rf "$work/fresh-cache"
 "$bin" "$big" -o "$work/report" --cache "$work/fresh-cache" --threads 2 > "$work/log" 2>&1 & pid=$!
-# Killed as soon as its temporary folder exists (the references still have to render then).
-for _ in $(seq 1000); do [ "$(temps)" -gt 0 ] && break; sleep 0.005; done
+# Killed as soon as its temporary folder exists (the references still have to render then); on a busy machine
+# that can take seconds, so wait while the run lives (up to 2 minutes), not a fixed few.
+for _ in $(seq 24000); do
+  [ "$(temps)" -gt 0 ] && break
+  kill -0 $pid 2> /dev/null || break
+  sleep 0.005
+done
 kill -KILL $pid 2> /dev/null || fail "the run finished before SIGKILL"
 wait $pid 2> /dev/null
 [ "$(temps)" -gt 0 ] || fail "SIGKILL left no temporary folder (nothing for the sweep to do)"
