@@ -108,8 +108,11 @@ void stratifyProjections(std::vector<float>& pts, uint32_t n, float beta, std::v
         });
         for (uint32_t r = 0; r < n; ++r) {
             float& x = pts[size_t(order[r]) * D + k];
-            const float lo = float(double(r) / n);
-            const float hi = std::min(std::nextafter(float(double(r + 1) / n), 0.0f), kOneMinusEpsilon);
+            // The stratum's float bounds: floor(x * n) = r exactly (the product is exact in double).
+            float lo = float(double(r) / n), hi = float(double(r + 1) / n);
+            if (double(lo) * n < r) lo = std::nextafter(lo, 1.0f);
+            while (double(hi) * n >= r + 1) hi = std::nextafter(hi, 0.0f);
+            hi = std::min(hi, kOneMinusEpsilon);
             const float inside = std::clamp(x, lo, hi);
             x = beta == 1.0f ? inside : wrapUnit(x + beta * (inside - x));
         }
