@@ -96,25 +96,37 @@ void jitteredStart(std::vector<float>& pts, uint32_t n, SplitMix64& rng) {
 }
 
 // Moves every coordinate beta of the way into the stratum [r/n, (r+1)/n) of its rank r along its axis (beta = 1:
-// the nearest point of the stratum, the least motion that makes each projection a Latin hypercube).
+// the nearest point of the stratum, the least motion that makes each projection a Latin hypercube). Ranks by
+// a counting sort on the stratum index, then by (x, index) inside each stratum: O(n) for the well-spread sets
+// this sees, where a comparison sort of every pass cost more than the relaxation pass itself.
 template <int D>
-void stratifyProjections(std::vector<float>& pts, uint32_t n, float beta, std::vector<uint32_t>& order) {
+void stratifyProjections(std::vector<float>& pts, uint32_t n, float beta, std::vector<uint32_t>& order,
+                         std::vector<uint32_t>& start) {
     order.resize(n);
+    start.resize(size_t(n) + 1);
     for (int k = 0; k < D; ++k) {
-        for (uint32_t i = 0; i < n; ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-            const float xa = pts[size_t(a) * D + k], xb = pts[size_t(b) * D + k];
-            return xa < xb || (xa == xb && a < b);
-        });
+        auto x = [&](uint32_t i) { return pts[size_t(i) * D + k]; };
+        auto stratum = [&](uint32_t i) { return std::min(n - 1, uint32_t(double(x(i)) * n)); };
+        std::fill(start.begin(), start.end(), 0u);
+        for (uint32_t i = 0; i < n; ++i) ++start[stratum(i) + 1];
+        for (uint32_t b = 0; b < n; ++b) start[b + 1] += start[b];
+        for (uint32_t i = 0; i < n; ++i) order[start[stratum(i)]++] = i; // start[b] is now stratum b's end
+        for (uint32_t b = 0, begin = 0; b < n; begin = start[b++])
+            for (uint32_t j = begin + 1; j < start[b]; ++j) // insertion sort of one stratum's few points
+                for (uint32_t m = j; m > begin; --m) {
+                    const uint32_t a = order[m - 1], c = order[m];
+                    if (x(a) < x(c) || (x(a) == x(c) && a < c)) break;
+                    std::swap(order[m - 1], order[m]);
+                }
         for (uint32_t r = 0; r < n; ++r) {
-            float& x = pts[size_t(order[r]) * D + k];
-            // The stratum's float bounds: floor(x * n) = r exactly (the product is exact in double).
+            float& v = pts[size_t(order[r]) * D + k];
+            // The stratum's float bounds: floor(v * n) = r exactly (the product is exact in double).
             float lo = float(double(r) / n), hi = float(double(r + 1) / n);
             if (double(lo) * n < r) lo = std::nextafter(lo, 1.0f);
             while (double(hi) * n >= r + 1) hi = std::nextafter(hi, 0.0f);
             hi = std::min(hi, kOneMinusEpsilon);
-            const float inside = std::clamp(x, lo, hi);
-            x = beta == 1.0f ? inside : wrapUnit(x + beta * (inside - x));
+            const float inside = std::clamp(v, lo, hi);
+            v = beta == 1.0f ? inside : wrapUnit(v + beta * (inside - v));
         }
     }
 }
@@ -125,14 +137,14 @@ bool stratifiedRelaxation(std::vector<float>& pts, uint32_t n, double scale, con
     const float accept = float(tuning.accept * scale), diameter = float(tuning.stratifyDiameter * scale);
     const RelaxParams pass{diameter, 2.0f * diameter, 0.0f, 1.0f, 1, false}; // one pass, nothing measured
     const RelaxParams measure{accept, 0.0f, 0.0f, 1.0f, 0};                  // no pass, the exact minimum
-    std::vector<uint32_t> order;
+    std::vector<uint32_t> order, start;
     std::vector<float> trial;
     for (int p = 1; p <= tuning.stratifyPasses; ++p) {
-        stratifyProjections<D>(pts, n, 0.5f, order);
+        stratifyProjections<D>(pts, n, 0.5f, order, start);
         relaxOverlaps<D>(pts, n, pass);
         if (p % kStratifyCheckEvery != 0) continue;
         trial = pts;
-        stratifyProjections<D>(trial, n, 1.0f, order);
+        stratifyProjections<D>(trial, n, 1.0f, order, start);
         if (relaxOverlaps<D>(trial, n, measure).minDistance >= accept) {
             pts.swap(trial);
             return true;
