@@ -161,6 +161,13 @@ SlopeEstimate slopeWithInterval(const std::vector<double>& ns, const std::vector
     return {slope, boots[size_t(0.025 * kBoot)], boots[size_t(0.975 * kBoot) - 1]};
 }
 
+// A ratio with two significant digits at least (ratios far below 1 would print as 0.00).
+std::string fmtRatio(double v) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(v >= 0.1 ? 2 : v >= 0.01 ? 3 : v >= 0.001 ? 4 : 5) << v;
+    return s.str();
+}
+
 // Ratio of two MSEs with a 95% interval (delta method on the log of each mean, the two samples independent).
 struct Ratio {
     double ratio, low, high;
@@ -433,8 +440,8 @@ int main(int argc, char** argv) {
                 }
                 for (size_t gi = 0; gi < gs.size(); ++gi) {
                     const Ratio r = mseRatio(sqP[gi], sqS[gi]);
-                    md << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << fmt(r.ratio) << " ["
-                       << fmt(r.low) << ", " << fmt(r.high) << "] |\n";
+                    md << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << fmtRatio(r.ratio) << " ["
+                       << fmtRatio(r.low) << ", " << fmtRatio(r.high) << "] |\n";
                 }
             }
         }

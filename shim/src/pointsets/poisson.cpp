@@ -30,6 +30,7 @@
 #include <cmath>
 #include <utility>
 
+#include "low_frequency.h"
 #include "overlap_relaxation.h"
 #include "random.h"
 #include "torus.h"
@@ -44,13 +45,16 @@ struct Tuning {
     int maxPasses;
     double stratifyDiameter; // disks of the passes that stratify the projections
     int stratifyPasses;      // at most this many of them
+    int cancelFrequency;     // modes 0 < |k| <= this are cancelled (low_frequency.h) during those passes
 };
 Tuning tuningFor(int dim) {
-    if (dim == 2) return {0.89, 0.86, 0.855, 1.6f, 100, 0.95, 300};
-    return {0.88, 0.84, 0.835, 1.5f, 100, 0.95, 300};
+    if (dim == 2) return {0.89, 0.86, 0.855, 1.6f, 100, 0.95, 300, 4};
+    return {0.88, 0.84, 0.835, 1.5f, 100, 0.95, 300, 3};
 }
-// The stratifying passes try an exact projection every this many passes.
+// The stratifying passes try an exact projection every this many passes, and cancel the lowest modes every
+// kCancelEvery (each cancellation costs about a relaxation pass in 2D; the passes in between heal the distances).
 constexpr int kStratifyCheckEvery = 20;
+constexpr int kCancelEvery = 5;
 
 // Retries of a set that misses `accept`; tiny sets cost nothing, so they get more tries at their optimum.
 inline int maxAttempts(uint32_t n) { return n < 16 ? 32 : 4; }
@@ -140,6 +144,7 @@ bool stratifiedRelaxation(std::vector<float>& pts, uint32_t n, double scale, con
     std::vector<uint32_t> order, start;
     std::vector<float> trial;
     for (int p = 1; p <= tuning.stratifyPasses; ++p) {
+        if (p % kCancelEvery == 0) cancelLowFrequencies<D>(pts, n, tuning.cancelFrequency, 1);
         stratifyProjections<D>(pts, n, 0.5f, order, start);
         relaxOverlaps<D>(pts, n, pass);
         if (p % kStratifyCheckEvery != 0) continue;
