@@ -57,7 +57,7 @@ constexpr int kStratifyCheckEvery = 20;
 constexpr int kCancelEvery = 5;
 
 // Retries of a set that misses `accept`; tiny sets cost nothing, so they get more tries at their optimum.
-inline int maxAttempts(uint32_t n) { return n < 16 ? 32 : 4; }
+inline int maxAttempts(uint32_t n) { return n < 16 ? 32 : n < 128 ? 16 : 4; }
 
 // Fisher-Yates: the relaxation leaves points in cell order; hosts get no spatial order to trip on.
 template <int D>
