@@ -14,6 +14,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "pointsets/pointsets.h"
+#include "pointsets/low_frequency.h"
 #include "pointsets/spectrum.h"
 
 #include <algorithm>
@@ -158,4 +159,39 @@ BOOST_AUTO_TEST_CASE(stratified_projections) {
                     BOOST_CHECK(std::all_of(count.begin(), count.end(), [](int c) { return c == 1; }));
                 }
             }
+}
+
+BOOST_AUTO_TEST_CASE(lowest_modes_cancelled) {
+    // The lowest modes of poisson sets, 0 < |k| <= 4 in 2D (24 modes) and <= 2 in 3D (16; the generator cancels
+    // |k| <= 3 there, of which the outer ring keeps more): periodogram sums measured 0.002-0.004 (2D) and 0.006-0.011
+    // (3D) at N = 1024, against 0.20 and 0.11 for relaxed sets without the stratifying passes (white noise: 1 per
+    // mode).
+    for (uint64_t s = 0; s < 4; ++s) {
+        const std::vector<float> p2 = generatePoisson(2, 1024, 0x10f + s), p3 = generatePoisson(3, 1024, 0x10f + s);
+        const double e2 = lowFrequencyEnergy<2>(p2, 1024, 4), e3 = lowFrequencyEnergy<3>(p3, 1024, 2);
+        BOOST_TEST_MESSAGE("seed " << s << ": low-mode energy 2D " << e2 << ", 3D " << e3);
+        BOOST_CHECK_LT(e2, 0.03);
+        BOOST_CHECK_LT(e3, 0.03);
+    }
+    // The displacement alone, on a white-noise set (power ~1 per mode): the modes fall by more than 100x in three
+    // steps (measured 1.5e7x) and no point moves by more than the spacing 1 / sqrt(N) (measured 0.94 of it:
+    // white noise needs large moves; poisson sets' low modes are ~1000x weaker).
+    std::vector<float> white(2 * 4096);
+    uint64_t state = 0x5eed;
+    for (float& v : white) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        v = float(state >> 40) * 0x1p-24f;
+    }
+    const std::vector<float> before = white;
+    const double e0 = lowFrequencyEnergy<2>(white, 4096, 4);
+    cancelLowFrequencies<2>(white, 4096, 4, 3);
+    const double e1 = lowFrequencyEnergy<2>(white, 4096, 4);
+    double maxMove = 0.0;
+    for (size_t i = 0; i < white.size(); ++i) {
+        double d = std::abs(double(white[i]) - before[i]);
+        maxMove = std::max(maxMove, std::min(d, 1.0 - d));
+    }
+    BOOST_TEST_MESSAGE("white noise: low-mode energy " << e0 << " -> " << e1 << ", largest move " << maxMove);
+    BOOST_CHECK_LT(e1, 0.01 * e0);
+    BOOST_CHECK_LT(maxMove, 1.0 / std::sqrt(4096.0));
 }

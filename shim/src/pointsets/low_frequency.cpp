@@ -53,8 +53,8 @@ void modeValues(const float* x, int K, const std::vector<std::array<int, D>>& mo
     }
     out.resize(modes.size());
     for (size_t m = 0; m < modes.size(); ++m) {
-        Complex v = powers[size_t(K) + modes[m][0]];
-        for (int c = 1; c < D; ++c) v *= powers[size_t(c) * side + K + modes[m][c]];
+        Complex v = powers[size_t(K + modes[m][0])];
+        for (int c = 1; c < D; ++c) v *= powers[size_t(c * side + K + modes[m][c])];
         out[m] = v;
     }
 }
