@@ -1,7 +1,7 @@
 // pattern_table.cpp — the one table of shim/POINTSETS.md for every pattern, the blue-noise spectrum and the
 // poisson / stratified MSE ratios, measured through the C API in one run.
 //
-//   shim_pattern_table -o DIR [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...]
+//   shim_pattern_table -o DIR [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...] [--shifts S (1000)]
 //
 // Writes DIR/table.md (rho, MSE slopes on disk / step / Gaussian with 95% bootstrap intervals, cost per value),
 // DIR/blue_noise.md + spectrum_blue.csv + blue_noise.{png,svg} (radial power spectrum of the per-pixel error,
@@ -238,6 +238,7 @@ int main(int argc, char** argv) {
     fs::path outDir = "pattern_table";
     int sets = 500;
     bool quick = false, poissonOnly = false;
+    int shiftsOption = 0; // toroidal shifts per base set in poisson_spread.md
     std::vector<uint32_t> ratioNs;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -249,6 +250,8 @@ int main(int argc, char** argv) {
             quick = true;
         else if (a == "--poisson-only")
             poissonOnly = true;
+        else if (a == "--shifts" && i + 1 < argc)
+            shiftsOption = std::atoi(argv[++i]);
         else if (a == "--ns" && i + 1 < argc) {
             std::istringstream list(argv[++i]);
             for (std::string item; std::getline(list, item, ',');) {
@@ -261,7 +264,7 @@ int main(int argc, char** argv) {
             }
         } else {
             std::cout << "usage: " << argv[0]
-                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...]\n";
+                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...] [--shifts S (1000)]\n";
             return a == "-h" || a == "--help" ? 0 : 2;
         }
     }
@@ -450,7 +453,7 @@ int main(int argc, char** argv) {
         std::ofstream spread(outDir / "poisson_spread.md");
         spread << "| dim | N | integrand | base sets | MSE max / min over base sets | rho min / mean over base sets "
                   "| generation (ms per set, one thread) |\n|---|---|---|---|---|---|---|\n";
-        const int shifts = quick ? 40 : 100;
+        const int shifts = shiftsOption > 0 ? shiftsOption : quick ? 100 : 1000;
         for (int dim : {2, 3}) {
             const auto gs = integrands(dim);
             for (uint32_t n : ns) {
