@@ -17,8 +17,8 @@
 //     costs O(1/N^2) instead of O(N^-1.5). The result is accepted once its exact minimum distance is
 //     rho >= 0.855 (3D 0.835).
 //  4. A set that misses is redrawn from a derived seed (at most maxAttempts(n)); if no attempt reaches the
-//     target with stratified projections, the best set of step 2 is served (rho first; never seen for N >= 16
-//     in the measured seeds, see POINTSETS.md).
+//     target with stratified projections, the best set of step 2 is served (rho first; measured: never in 2D
+//     for N >= 16, 2% of seeds in 3D at N = 17 and 20, see POINTSETS.md).
 //  5. Shuffle the order (the relaxation leaves points in cell order).
 //
 // 1D is different: the maximin optimum is the equidistant lattice (rho = 1), unique up to a shift, so we
