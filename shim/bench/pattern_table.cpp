@@ -1,12 +1,14 @@
 // pattern_table.cpp — the one table of shim/POINTSETS.md for every pattern, the blue-noise spectrum and the
 // poisson / stratified MSE ratios, measured through the C API in one run.
 //
-//   shim_pattern_table -o DIR [--sets R (500)] [--quick]
+//   shim_pattern_table -o DIR [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...] [--shifts S (1000)]
 //
 // Writes DIR/table.md (rho, MSE slopes on disk / step / Gaussian with 95% bootstrap intervals, cost per value),
 // DIR/blue_noise.md + spectrum_blue.csv + blue_noise.{png,svg} (radial power spectrum of the per-pixel error,
 // gnuplot), DIR/poisson_vs_stratified.md (MSE ratios per N and integrand with 95% intervals, 2D and 3D) and
-// DIR/poisson_spread.md (MSE of each cached poisson base set, max / min per N).
+// DIR/poisson_spread.md (MSE of each cached poisson base set, max / min per N, with the base sets' rho and
+// generation time). --poisson-only writes only the last two (the poisson / stratified comparison); --ns sets
+// its N.
 #include "pointsets/pointsets.h"
 #include "poisson_cache.h"
 #include "hash.h"
@@ -159,6 +161,13 @@ SlopeEstimate slopeWithInterval(const std::vector<double>& ns, const std::vector
     return {slope, boots[size_t(0.025 * kBoot)], boots[size_t(0.975 * kBoot) - 1]};
 }
 
+// A ratio with two significant digits at least (ratios far below 1 would print as 0.00).
+std::string fmtRatio(double v) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(v >= 0.1 ? 2 : v >= 0.01 ? 3 : v >= 0.001 ? 4 : 5) << v;
+    return s.str();
+}
+
 // Ratio of two MSEs with a 95% interval (delta method on the log of each mean, the two samples independent).
 struct Ratio {
     double ratio, low, high;
@@ -228,7 +237,9 @@ std::vector<double> periodogram(const std::vector<double>& image, size_t size) {
 int main(int argc, char** argv) {
     fs::path outDir = "pattern_table";
     int sets = 500;
-    bool quick = false;
+    bool quick = false, poissonOnly = false;
+    int shiftsOption = 0; // toroidal shifts per base set in poisson_spread.md
+    std::vector<uint32_t> ratioNs;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "-o" && i + 1 < argc)
@@ -237,8 +248,23 @@ int main(int argc, char** argv) {
             sets = std::atoi(argv[++i]);
         else if (a == "--quick")
             quick = true;
-        else {
-            std::cout << "usage: " << argv[0] << " [-o DIR] [--sets R (500)] [--quick]\n";
+        else if (a == "--poisson-only")
+            poissonOnly = true;
+        else if (a == "--shifts" && i + 1 < argc)
+            shiftsOption = std::atoi(argv[++i]);
+        else if (a == "--ns" && i + 1 < argc) {
+            std::istringstream list(argv[++i]);
+            for (std::string item; std::getline(list, item, ',');) {
+                const long n = std::atol(item.c_str());
+                if (n < 1 || n > 65536) {
+                    std::cerr << "--ns: '" << item << "' is not a set size in 1..65536\n";
+                    return 2;
+                }
+                ratioNs.push_back(uint32_t(n));
+            }
+        } else {
+            std::cout << "usage: " << argv[0]
+                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...] [--shifts S (1000)]\n";
             return a == "-h" || a == "--help" ? 0 : 2;
         }
     }
@@ -247,150 +273,156 @@ int main(int argc, char** argv) {
     const std::vector<uint32_t> slopeNs = {16, 64, 256, 1024, 4096};
 
     // ---- the table: rho, slopes, cost ----------------------------------------------------------------------
-    std::ofstream table(outDir / "table.md");
-    table << "| pattern | rho (2D, N = 1024, mean) | disk slope [95%] | step slope [95%] | Gaussian slope [95%] | "
-             "Gaussian slope N = 256..4096 [95%] | cost per value (ns, 2D N = 4096) |\n|---|---|---|---|---|---|---|\n";
-    const auto g2 = integrands(2);
-    for (const char* pattern : kAllPatterns) {
-        std::vector<std::vector<std::vector<double>>> sq(g2.size(), std::vector<std::vector<double>>(slopeNs.size()));
-        std::vector<float> points;
-        double rhoSum = 0;
-        int rhoCount = 0;
-        for (size_t ni = 0; ni < slopeNs.size(); ++ni) {
-            const uint32_t n = slopeNs[ni];
-            const int r = std::string(pattern) == "poisson-seed" && n >= 1024 ? std::max(sets / 5, 50) : sets;
-            Sampler s(pattern, n, 2, 0x7ab1e000 + n);
-            for (int set = 0; set < r; ++set) {
-                s.fill(uint32_t(set), 0, points);
-                for (size_t gi = 0; gi < g2.size(); ++gi) {
-                    const double e = estimate(g2[gi], points, 2) - g2[gi].exact;
-                    sq[gi][ni].push_back(e * e);
-                }
-                if (n == 1024 && set < 50) {
-                    rhoSum += stipple::pointsets::relativeRadius(2, points.data(), n);
-                    ++rhoCount;
+    if (!poissonOnly) {
+        std::ofstream table(outDir / "table.md");
+        table << "| pattern | rho (2D, N = 1024, mean) | disk slope [95%] | step slope [95%] | Gaussian slope [95%] | "
+                 "Gaussian slope N = 256..4096 [95%] | cost per value (ns, 2D N = 4096) "
+                 "|\n|---|---|---|---|---|---|---|\n";
+        const auto g2 = integrands(2);
+        for (const char* pattern : kAllPatterns) {
+            std::vector<std::vector<std::vector<double>>> sq(g2.size(),
+                                                             std::vector<std::vector<double>>(slopeNs.size()));
+            std::vector<float> points;
+            double rhoSum = 0;
+            int rhoCount = 0;
+            for (size_t ni = 0; ni < slopeNs.size(); ++ni) {
+                const uint32_t n = slopeNs[ni];
+                const int r = std::string(pattern) == "poisson-seed" && n >= 1024 ? std::max(sets / 5, 50) : sets;
+                Sampler s(pattern, n, 2, 0x7ab1e000 + n);
+                for (int set = 0; set < r; ++set) {
+                    s.fill(uint32_t(set), 0, points);
+                    for (size_t gi = 0; gi < g2.size(); ++gi) {
+                        const double e = estimate(g2[gi], points, 2) - g2[gi].exact;
+                        sq[gi][ni].push_back(e * e);
+                    }
+                    if (n == 1024 && set < 50) {
+                        rhoSum += stipple::pointsets::relativeRadius(2, points.data(), n);
+                        ++rhoCount;
+                    }
                 }
             }
+            std::vector<double> ns(slopeNs.begin(), slopeNs.end());
+            table << "| " << pattern << " | " << fmt(rhoSum / rhoCount, 3);
+            for (size_t gi = 0; gi < g2.size(); ++gi) {
+                const SlopeEstimate e = slopeWithInterval(ns, sq[gi], 11 + gi);
+                table << " | " << fmt(e.slope) << " [" << fmt(e.low) << ", " << fmt(e.high) << "]";
+            }
+            {
+                std::vector<double> hi(ns.begin() + 2, ns.end());
+                std::vector<std::vector<double>> hiSq(sq[2].begin() + 2, sq[2].end());
+                const SlopeEstimate e = slopeWithInterval(hi, hiSq, 99);
+                table << " | " << fmt(e.slope) << " [" << fmt(e.low) << ", " << fmt(e.high) << "]";
+            }
+            // Cost: thread CPU time of fill_pixel per float, 2D N = 4096, warm (poisson's cache family generated).
+            Sampler s(pattern, 4096, 2, 0xc057);
+            const int calls = std::string(pattern) == "poisson-seed" ? 20 : 400;
+            for (int i = 0; i < 40; ++i) s.fill(uint32_t(i), 1, points);
+            const double t0 = threadSeconds();
+            for (int i = 0; i < calls; ++i) s.fill(uint32_t(i), 2, points);
+            const double ns_ = (threadSeconds() - t0) / (double(calls) * s.floats) * 1e9;
+            table << " | " << fmt(ns_, 1) << " |\n";
+            std::cerr << pattern << " done\n";
         }
-        std::vector<double> ns(slopeNs.begin(), slopeNs.end());
-        table << "| " << pattern << " | " << fmt(rhoSum / rhoCount, 3);
-        for (size_t gi = 0; gi < g2.size(); ++gi) {
-            const SlopeEstimate e = slopeWithInterval(ns, sq[gi], 11 + gi);
-            table << " | " << fmt(e.slope) << " [" << fmt(e.low) << ", " << fmt(e.high) << "]";
-        }
-        {
-            std::vector<double> hi(ns.begin() + 2, ns.end());
-            std::vector<std::vector<double>> hiSq(sq[2].begin() + 2, sq[2].end());
-            const SlopeEstimate e = slopeWithInterval(hi, hiSq, 99);
-            table << " | " << fmt(e.slope) << " [" << fmt(e.low) << ", " << fmt(e.high) << "]";
-        }
-        // Cost: thread CPU time of fill_pixel per float, 2D N = 4096, warm (poisson's cache family generated).
-        Sampler s(pattern, 4096, 2, 0xc057);
-        const int calls = std::string(pattern) == "poisson-seed" ? 20 : 400;
-        for (int i = 0; i < 40; ++i) s.fill(uint32_t(i), 1, points);
-        const double t0 = threadSeconds();
-        for (int i = 0; i < calls; ++i) s.fill(uint32_t(i), 2, points);
-        const double ns_ = (threadSeconds() - t0) / (double(calls) * s.floats) * 1e9;
-        table << " | " << fmt(ns_, 1) << " |\n";
-        std::cerr << pattern << " done\n";
-    }
-    table.close();
+        table.close();
 
-    // ---- blue noise: spectrum of the per-pixel error of a fixed integrand --------------------------------------
-    {
-        constexpr size_t kSize = 128;
-        const int images = quick ? 6 : 24;
-        const Integrand& g = g2[2]; // the Gaussian: the smooth integrand the per-pixel error is measured on
-        std::ofstream md(outDir / "blue_noise.md");
-        std::ofstream csv(outDir / "spectrum_blue.csv");
-        csv << "pattern,flag,N,radius,power_over_mse\n";
-        md << "| pattern | N | flag | per-pixel MSE | MSE ratio flag/plain [95%] | low-quarter energy vs white noise "
-              "(white / measured) |\n|---|---|---|---|---|---|\n";
-        const uint32_t blueNs[] = {16, 256};
-        for (const char* pattern : {"independent", "stratified", "poisson", "sobol", "pmj02"})
-            for (uint32_t n : blueNs) {
-                std::vector<double> plainSq;
-                for (uint32_t flag : {0u, 1u}) {
-                    // Several images with their own seeds: pixels of one image share tiles (one Owen scrambling
-                    // or one base set per tile), so the MSE's uncertainty is over images, not pixels.
-                    std::vector<double> imageMse, power(kSize * kSize, 0.0);
-                    for (int image = 0; image < images; ++image) {
-                        Sampler s(pattern, n, 2, 0xb1e0 + n + 1000 * uint64_t(image), flag);
-                        std::vector<double> error(kSize * kSize);
-                        std::vector<float> points;
-                        double sum = 0;
-                        for (size_t y = 0; y < kSize; ++y)
-                            for (size_t x = 0; x < kSize; ++x) {
-                                s.fill(uint32_t(x), uint32_t(y), points);
-                                const double e = estimate(g, points, 2) - g.exact;
-                                error[y * kSize + x] = e;
-                                sum += e * e;
-                            }
-                        imageMse.push_back(sum / double(kSize * kSize));
-                        const auto p = periodogram(error, kSize);
-                        for (size_t i = 0; i < p.size(); ++i) power[i] += p[i] / images;
-                    }
-                    const double mse = mean(imageMse);
-                    // Lowest quarter of frequencies: |f| < Nyquist / 4 = 1/8 cycle per pixel, DC excluded.
-                    double band = 0;
-                    int bins = 0;
-                    std::vector<double> radial(kSize / 2 + 1, 0.0);
-                    std::vector<int> radialCount(kSize / 2 + 1, 0);
-                    for (size_t ky = 0; ky < kSize; ++ky)
-                        for (size_t kx = 0; kx < kSize; ++kx) {
-                            const double fx = double(kx <= kSize / 2 ? kx : kSize - kx) / kSize;
-                            const double fy = double(ky <= kSize / 2 ? ky : kSize - ky) / kSize;
-                            const double f = std::sqrt(fx * fx + fy * fy);
-                            if (kx == 0 && ky == 0) continue;
-                            if (f < 0.125) band += power[ky * kSize + kx], ++bins;
-                            const size_t ring = size_t(std::lround(f * kSize));
-                            if (ring < radial.size()) radial[ring] += power[ky * kSize + kx], ++radialCount[ring];
+        // ---- blue noise: spectrum of the per-pixel error of a fixed integrand --------------------------------------
+        {
+            constexpr size_t kSize = 128;
+            const int images = quick ? 6 : 24;
+            const Integrand& g = g2[2]; // the Gaussian: the smooth integrand the per-pixel error is measured on
+            std::ofstream md(outDir / "blue_noise.md");
+            std::ofstream csv(outDir / "spectrum_blue.csv");
+            csv << "pattern,flag,N,radius,power_over_mse\n";
+            md << "| pattern | N | flag | per-pixel MSE | MSE ratio flag/plain [95%] | low-quarter energy vs white "
+                  "noise "
+                  "(white / measured) |\n|---|---|---|---|---|---|\n";
+            const uint32_t blueNs[] = {16, 256};
+            for (const char* pattern : {"independent", "stratified", "poisson", "sobol", "pmj02"})
+                for (uint32_t n : blueNs) {
+                    std::vector<double> plainSq;
+                    for (uint32_t flag : {0u, 1u}) {
+                        // Several images with their own seeds: pixels of one image share tiles (one Owen scrambling
+                        // or one base set per tile), so the MSE's uncertainty is over images, not pixels.
+                        std::vector<double> imageMse, power(kSize * kSize, 0.0);
+                        for (int image = 0; image < images; ++image) {
+                            Sampler s(pattern, n, 2, 0xb1e0 + n + 1000 * uint64_t(image), flag);
+                            std::vector<double> error(kSize * kSize);
+                            std::vector<float> points;
+                            double sum = 0;
+                            for (size_t y = 0; y < kSize; ++y)
+                                for (size_t x = 0; x < kSize; ++x) {
+                                    s.fill(uint32_t(x), uint32_t(y), points);
+                                    const double e = estimate(g, points, 2) - g.exact;
+                                    error[y * kSize + x] = e;
+                                    sum += e * e;
+                                }
+                            imageMse.push_back(sum / double(kSize * kSize));
+                            const auto p = periodogram(error, kSize);
+                            for (size_t i = 0; i < p.size(); ++i) power[i] += p[i] / images;
                         }
-                    const double ratio = (bins * mse) / band;
-                    for (size_t r = 1; r < radial.size(); ++r)
-                        if (radialCount[r])
-                            csv << pattern << "," << flag << "," << n << "," << double(r) / kSize << ","
-                                << radial[r] / radialCount[r] / mse << "\n";
-                    md << "| " << pattern << " | " << n << " | " << (flag ? "blue noise" : "-") << " | "
-                       << std::scientific << std::setprecision(3) << mse << std::fixed << " | ";
-                    if (flag) {
-                        const Ratio r = mseRatio(imageMse, plainSq);
-                        md << fmt(r.ratio, 3) << " [" << fmt(r.low, 3) << ", " << fmt(r.high, 3) << "]";
-                    } else {
-                        plainSq = imageMse;
-                        md << "-";
+                        const double mse = mean(imageMse);
+                        // Lowest quarter of frequencies: |f| < Nyquist / 4 = 1/8 cycle per pixel, DC excluded.
+                        double band = 0;
+                        int bins = 0;
+                        std::vector<double> radial(kSize / 2 + 1, 0.0);
+                        std::vector<int> radialCount(kSize / 2 + 1, 0);
+                        for (size_t ky = 0; ky < kSize; ++ky)
+                            for (size_t kx = 0; kx < kSize; ++kx) {
+                                const double fx = double(kx <= kSize / 2 ? kx : kSize - kx) / kSize;
+                                const double fy = double(ky <= kSize / 2 ? ky : kSize - ky) / kSize;
+                                const double f = std::sqrt(fx * fx + fy * fy);
+                                if (kx == 0 && ky == 0) continue;
+                                if (f < 0.125) band += power[ky * kSize + kx], ++bins;
+                                const size_t ring = size_t(std::lround(f * kSize));
+                                if (ring < radial.size()) radial[ring] += power[ky * kSize + kx], ++radialCount[ring];
+                            }
+                        const double ratio = (bins * mse) / band;
+                        for (size_t r = 1; r < radial.size(); ++r)
+                            if (radialCount[r])
+                                csv << pattern << "," << flag << "," << n << "," << double(r) / kSize << ","
+                                    << radial[r] / radialCount[r] / mse << "\n";
+                        md << "| " << pattern << " | " << n << " | " << (flag ? "blue noise" : "-") << " | "
+                           << std::scientific << std::setprecision(3) << mse << std::fixed << " | ";
+                        if (flag) {
+                            const Ratio r = mseRatio(imageMse, plainSq);
+                            md << fmt(r.ratio, 3) << " [" << fmt(r.low, 3) << ", " << fmt(r.high, 3) << "]";
+                        } else {
+                            plainSq = imageMse;
+                            md << "-";
+                        }
+                        md << " | " << fmt(ratio, 1) << " |\n";
                     }
-                    md << " | " << fmt(ratio, 1) << " |\n";
                 }
+            md.close();
+            std::ofstream gp(outDir / "blue_noise.gp");
+            gp << "set datafile separator ','\nset logscale y\nset xlabel 'frequency (cycles per pixel)'\n"
+                  "set ylabel 'radial power / per-pixel MSE (white noise = 1)'\nset key top left\n"
+                  "set title 'Per-pixel error spectrum, Gaussian integrand, 128x128 pixels'\n"
+                  "set arrow from 0.125, graph 0 to 0.125, graph 1 nohead dt 2\n"
+                  "sel(p,f,n)=(strcol(1) eq p && $2 == f && $3 == n) ? $5 : 1/0\n"
+                  "plot for [p in 'sobol stratified independent pmj02'] for [f in '0 1'] '"
+               << (outDir / "spectrum_blue.csv").string()
+               << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : "
+                  "'plain')\n";
+            gp.close();
+            for (const char* term : {"pngcairo size 900,600", "svg size 900,600"}) {
+                const std::string ext = std::string(term).substr(0, 3) == "png" ? "png" : "svg";
+                const std::string cmd = "gnuplot -e \"set terminal " + std::string(term) + "; set output '" +
+                                        (outDir / ("blue_noise." + ext)).string() + "'\" '" +
+                                        (outDir / "blue_noise.gp").string() + "' 2>&1";
+                if (std::system(cmd.c_str()) != 0) std::cerr << "gnuplot failed: " << cmd << "\n";
             }
-        md.close();
-        std::ofstream gp(outDir / "blue_noise.gp");
-        gp << "set datafile separator ','\nset logscale y\nset xlabel 'frequency (cycles per pixel)'\n"
-              "set ylabel 'radial power / per-pixel MSE (white noise = 1)'\nset key top left\n"
-              "set title 'Per-pixel error spectrum, Gaussian integrand, 128x128 pixels'\n"
-              "set arrow from 0.125, graph 0 to 0.125, graph 1 nohead dt 2\n"
-              "sel(p,f,n)=(strcol(1) eq p && $2 == f && $3 == n) ? $5 : 1/0\n"
-              "plot for [p in 'sobol stratified independent pmj02'] for [f in '0 1'] '"
-           << (outDir / "spectrum_blue.csv").string()
-           << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : "
-              "'plain')\n";
-        gp.close();
-        for (const char* term : {"pngcairo size 900,600", "svg size 900,600"}) {
-            const std::string ext = std::string(term).substr(0, 3) == "png" ? "png" : "svg";
-            const std::string cmd = "gnuplot -e \"set terminal " + std::string(term) + "; set output '" +
-                                    (outDir / ("blue_noise." + ext)).string() + "'\" '" +
-                                    (outDir / "blue_noise.gp").string() + "' 2>&1";
-            if (std::system(cmd.c_str()) != 0) std::cerr << "gnuplot failed: " << cmd << "\n";
+            std::cerr << "blue noise done\n";
         }
-        std::cerr << "blue noise done\n";
-    }
+    } // !poissonOnly
 
     // ---- poisson vs stratified, 2D and 3D, every N ----------------------------------------------------------
     {
         std::ofstream md(outDir / "poisson_vs_stratified.md");
         md << "| dim | N | integrand | MSE poisson / stratified [95%] |\n|---|---|---|---|\n";
-        const std::vector<uint32_t> ns = quick ? std::vector<uint32_t>{16, 256, 4096}
-                                               : std::vector<uint32_t>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
+        const std::vector<uint32_t> ns = !ratioNs.empty() ? ratioNs
+                                         : quick          ? std::vector<uint32_t>{16, 256, 4096}
+                                                 : std::vector<uint32_t>{16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
         for (int dim : {2, 3}) {
             const auto gs = integrands(dim);
             for (uint32_t n : ns) {
@@ -411,23 +443,32 @@ int main(int argc, char** argv) {
                 }
                 for (size_t gi = 0; gi < gs.size(); ++gi) {
                     const Ratio r = mseRatio(sqP[gi], sqS[gi]);
-                    md << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << fmt(r.ratio) << " ["
-                       << fmt(r.low) << ", " << fmt(r.high) << "] |\n";
+                    md << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << fmtRatio(r.ratio) << " ["
+                       << fmtRatio(r.low) << ", " << fmtRatio(r.high) << "] |\n";
                 }
             }
         }
-        // Spread between the cached base sets: each set under `shifts` uniform toroidal shifts.
+        // Spread between the cached base sets: each set under `shifts` uniform toroidal shifts. The family is
+        // a fresh one (same content as the cache's), so generating it measures the one-time cost per set.
         std::ofstream spread(outDir / "poisson_spread.md");
-        spread << "| dim | N | integrand | base sets | MSE max / min over base sets |\n|---|---|---|---|---|\n";
-        const int shifts = quick ? 40 : 100;
+        spread << "| dim | N | integrand | base sets | MSE max / min over base sets | rho min / mean over base sets "
+                  "| generation (ms per set, one thread) |\n|---|---|---|---|---|---|---|\n";
+        const int shifts = shiftsOption > 0 ? shiftsOption : quick ? 100 : 1000;
         for (int dim : {2, 3}) {
             const auto gs = integrands(dim);
             for (uint32_t n : ns) {
-                auto family = stipple::PoissonCache::global().acquire(uint32_t(dim), n);
+                const stipple::PoissonFamily family(uint32_t(dim), n,
+                                                    stipple::PoissonCache::setCountFor(uint32_t(dim), n));
+                const double t0 = threadSeconds();
+                for (uint32_t j = 0; j < family.setCount(); ++j) family.set(j);
+                const double msPerSet = (threadSeconds() - t0) / family.setCount() * 1e3;
+                double rhoMin = 1e9, rhoSum = 0;
                 std::vector<std::vector<double>> perSet(gs.size());
                 std::vector<float> shifted(size_t(n) * dim);
-                for (uint32_t j = 0; j < family->setCount(); ++j) {
-                    const float* base = family->set(j);
+                for (uint32_t j = 0; j < family.setCount(); ++j) {
+                    const float* base = family.set(j);
+                    const double rho = stipple::pointsets::relativeRadius(dim, base, n);
+                    rhoMin = std::min(rhoMin, rho), rhoSum += rho;
                     std::vector<double> acc(gs.size(), 0.0);
                     for (int t = 0; t < shifts; ++t) {
                         float shift[3];
@@ -446,8 +487,9 @@ int main(int argc, char** argv) {
                 }
                 for (size_t gi = 0; gi < gs.size(); ++gi) {
                     const auto [lo, hi] = std::minmax_element(perSet[gi].begin(), perSet[gi].end());
-                    spread << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << family->setCount() << " | "
-                           << fmt(*hi / *lo) << " |\n";
+                    spread << "| " << dim << " | " << n << " | " << gs[gi].name << " | " << family.setCount() << " | "
+                           << fmt(*hi / *lo) << " | " << fmt(rhoMin, 3) << " / " << fmt(rhoSum / family.setCount(), 3)
+                           << " | " << fmt(msPerSet, 2) << " |\n";
                 }
             }
         }

@@ -17,6 +17,7 @@ struct RelaxParams {
     float accept;   // ... and an exact measurement confirms no pair is closer than this (<= target)
     float omega;    // over-relaxation of each push, in [1, 2)
     int maxPasses;
+    bool measureUnverified = true; // measure the exact minimum after maxPasses unverified passes
 };
 
 struct RelaxStats {

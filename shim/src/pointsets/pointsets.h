@@ -14,7 +14,8 @@ namespace stipple::pointsets {
 inline constexpr uint32_t kMaxPoints = 1u << 22;
 
 // Exactly n points in [0,1)^dim (dim 1..3), interleaved, toroidal domain. Deterministic in seed.
-// High quality: overlap-removal relaxation to rho >= 0.855 in 2D (see shim/POINTSETS.md); order shuffled.
+// High quality (see shim/POINTSETS.md): rho >= 0.855 in 2D (0.835 in 3D), every 1D projection stratified (one
+// point per 1/n) and the lowest Fourier modes cancelled, from a jittered start and relaxation; order shuffled.
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
 
 // The study's Algorithm 1: dart throwing with r0 = N^(-1/dim), r <- 0.75 r after TRY_LIMIT = 100

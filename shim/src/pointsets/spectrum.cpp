@@ -38,14 +38,14 @@ double PowerSpectrum2D::at(int kx, int ky) const {
     return sum_[size_t(ky + K_) * W_ + (kx + K_)] / sets_;
 }
 
-std::vector<PowerSpectrum2D::Ring> PowerSpectrum2D::rings() const {
+std::vector<PowerSpectrum2D::Ring> PowerSpectrum2D::rings(bool skipAxes) const {
     std::vector<double> s(K_ + 1, 0.0), s2(K_ + 1, 0.0), r(K_ + 1, 0.0);
     std::vector<int> c(K_ + 1, 0);
     for (int ky = -K_; ky <= K_; ++ky)
         for (int kx = -K_; kx <= K_; ++kx) {
             double radius = std::hypot(double(kx), double(ky));
             int ring = int(std::lround(radius));
-            if (ring < 1 || ring > K_) continue;
+            if (ring < 1 || ring > K_ || (skipAxes && (kx == 0 || ky == 0))) continue;
             double p = at(kx, ky);
             s[ring] += p;
             s2[ring] += p * p;

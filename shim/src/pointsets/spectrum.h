@@ -30,8 +30,9 @@ public:
         double anisotropy; // 10 log10(variance / mean^2) over the ring, in dB
         int count;
     };
-    // Rings of unit width centred on integer radii 1..K.
-    std::vector<Ring> rings() const;
+    // Rings of unit width centred on integer radii 1..K. skipAxes leaves out the frequencies on the axes
+    // (kx = 0 or ky = 0), which sets with stratified 1D projections empty on purpose.
+    std::vector<Ring> rings(bool skipAxes = false) const;
 
 private:
     int K_, W_;
