@@ -103,6 +103,7 @@ public:
 
         Spectrum L;
         const int nCam = int(cam.size()), nLight = int(light.size());
+        const int chain = specularChainStart(cam);
         for (int t = 1; t <= nCam; ++t) {
             const int sMax = std::min(nLight, maxDepth_ + 2 - t);
             for (int s = 0; s <= std::max(sMax, t >= 2 ? 1 : 0); ++s) {
@@ -110,7 +111,8 @@ public:
                 if (t == 1) {
                     if (s <= nLight) lightTracing(light, s, sv, tile);
                 } else if (s == 0) {
-                    L += hitEmitter(light, cam, t);
+                    Spectrum c = hitEmitter(light, cam, t);
+                    L += endsChain(cam, chain, t) ? c * (1.0f / (kChainProbes + 1)) : c;
                 } else if (s == 1) {
                     L += freshLightSample(light, cam, t, sv, tile);
                 } else if (s <= nLight) {
@@ -118,10 +120,45 @@ public:
                 }
             }
         }
+        if (chain > 0) {
+            thread_local std::vector<PathVertex> probe;
+            for (int j = 1; j <= kChainProbes; ++j) {
+                probe.assign(cam.begin(), cam.begin() + chain + 1);
+                if (!subpaths_.specularChainProbe(probe, j, sv, tile)) continue;
+                const int t = int(probe.size());
+                if (endsChain(probe, chain, t) && filter_.accepts(0, t))
+                    L += hitEmitter(light, probe, t) * (1.0f / (kChainProbes + 1));
+            }
+        }
         return L;
     }
 
 private:
+    // Splitting for emitters seen through delta surfaces from a non-delta one (a caustic seen in the glass that
+    // makes it: light -> glass -> table -> glass -> camera). Only s = 0 samples such paths (every connection
+    // would end on a delta vertex), and it hits a small light's image through the glass rarely: the rare, very
+    // bright samples that dominate a reference's variance. At the first non-delta camera vertex reached through
+    // a delta one, kChainProbes more BSDF samples continue through delta vertices only; every path of that form
+    // (that vertex, one or more delta vertices, an emitter) is estimated by the mean over the walk's own
+    // continuation and the probes, each distributed like the walk's, so the estimate stays unbiased and the
+    // strategy weights are unchanged. The probes cost rays only on camera subpaths that pass through glass.
+    static constexpr int kChainProbes = 15;
+
+    // Index of the first non-delta surface vertex of the camera subpath that follows a delta one; -1 when none.
+    static int specularChainStart(const std::vector<PathVertex>& cam) {
+        for (size_t k = 2; k < cam.size(); ++k)
+            if (cam[k - 1].delta && !cam[k].delta) return int(k);
+        return -1;
+    }
+    // Whether z_0 .. z_{t-1} continues the vertex `chain` with one or more delta vertices and then stops: an
+    // emitter hit at z_{t-1} is then the one the probes also estimate.
+    static bool endsChain(const std::vector<PathVertex>& cam, int chain, int t) {
+        if (chain < 0 || t - 2 <= chain) return false;
+        for (int j = chain + 1; j <= t - 2; ++j)
+            if (!cam[size_t(j)].delta) return false;
+        return true;
+    }
+
     float weight(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int s, int t,
                  const ConnectionVertices& fresh) const {
         return filter_.weighted ? mis_.weight(light, cam, s, t, fresh) : 1.0f;
