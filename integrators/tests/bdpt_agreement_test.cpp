@@ -5,7 +5,7 @@
 // split samples 1.5x fails it). Each
 // image is cut into 8x8 blocks; per block, K = 8 renders of each integrator (different seeds) are compared by Welch's
 // t-test (Jung et al. 2020); 2x2 blocks for the thin lens, whose defocus only moves energy by a few pixels. Family-wise
-// alpha = 0.01, Sidak-corrected over all blocks of the four scenes.
+// alpha = 0.01, Sidak-corrected over all blocks of the five scenes.
 #define BOOST_TEST_MODULE bdpt_agreement
 #include <boost/test/unit_test.hpp>
 

@@ -6,14 +6,17 @@
 //               the tile's SplatList, so images do not depend on the thread count);
 //   otherwise   y_{s-1} and z_{t-1} joined by a shadow ray.
 // Each contribution carries the power-heuristic weight of bdpt_mis.h. Vertices with delta BSDFs (mirror, glass)
-// are never connection ends. Light subpaths start on a light chosen by power and scatter with the adjoint BSDF
-// (TransportMode::Importance: no 1/eta^2 at refractions, shading-normal correction). No Russian roulette: the
-// walks stop at the depth limit, so every strategy's density is known exactly.
+// are never connection ends, so an emitter seen through glass from a diffuse surface (a caustic seen in the glass
+// that casts it) is left to s = 0 alone; those paths are split along their specular chain (kChainProbes below). Light
+// subpaths start on a light chosen by power and scatter with the adjoint BSDF (TransportMode::Importance: no 1/eta^2 at
+// refractions, shading-normal correction). No Russian roulette: the walks stop at the depth limit, so every strategy's
+// density is known exactly.
 //
 // Dimensions: the walks' (bdpt_subpath.h), then per connection (max depth D; only what the scene uses):
 //   connect.s1.tT.light.choice 1D (more than one light), connect.s1.tT.light.pos 2D   T = 2 .. D+1
 //   connect.t1.sS.lens 2D                             S = 1 .. D+1, thin-lens cameras only
-// Light walks and s = 1 samples are skipped when every material is specular (no connection can be made).
+// Light walks and s = 1 samples are skipped when every material is specular (no connection can be made). The
+// specular-chain probes declare nothing: they read the camera walk's dimensions, shifted (bdpt_subpath.h).
 #include "integrators/bdpt/bdpt_integrator.h"
 
 #include "integrators/bdpt/bdpt_mis.h"
