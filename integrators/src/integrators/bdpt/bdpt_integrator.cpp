@@ -123,7 +123,7 @@ public:
                 }
             }
         }
-        if (chain > 0) {
+        if (chain > 0 && filter_.s <= 0) { // the probes estimate s = 0 only
             thread_local std::vector<PathVertex> probe;
             for (int j = 1; j <= kChainProbes; ++j) {
                 probe.assign(cam.begin(), cam.begin() + chain + 1);
