@@ -1,5 +1,8 @@
 #include "integrators/bdpt/bdpt_subpath.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace stipple::render::bdpt {
 
 void SubpathGenerator::declareDimensions(SampleLayout& layout, bool lightWalk) {
@@ -24,6 +27,41 @@ void SubpathGenerator::declareDimensions(SampleLayout& layout, bool lightWalk) {
     }
 }
 
+void SubpathGenerator::pushSurface(const SurfaceHit& hit, const Spectrum& beta, float pdfDir,
+                                   std::vector<PathVertex>& path) {
+    PathVertex v;
+    v.kind = VertexKind::Surface;
+    v.p = hit.p;
+    v.n = v.ns = hit.ng;
+    v.material = hit.material;
+    v.light = hit.light;
+    v.beta = beta;
+    v.delta = hit.material->isSpecular();
+    v.pdfFwd = PathEvaluator::toArea(pdfDir, path.back(), v);
+    path.push_back(v);
+}
+
+bool SubpathGenerator::scatter(std::vector<PathVertex>& path, const Vec3& woW, float uc, Point2 u, TransportMode mode,
+                               Spectrum& beta, float& pdfDir, Ray& ray) {
+    const PathVertex& v = path.back();
+    Frame frame(v.ns);
+    Vec3 wo = frame.toLocal(woW);
+    BsdfSample bs;
+    if (!v.material->sample(wo, uc, u, bs, mode)) return false;
+    Vec3 wiW = frame.toWorld(bs.wi);
+    beta *= bs.f * (std::abs(bs.wi.z) / bs.pdf);
+    if (mode == TransportMode::Importance) beta *= shadingNormalCorrection(v.ns, v.n, woW, wiW);
+    // Densities of a delta lobe are Dirac terms: stored as 0, read as 1 by the MIS walk.
+    pdfDir = bs.isSpecular() ? 0.0f : bs.pdf;
+    // The reverse density: the previous vertex as sampled from here, arriving from the next one.
+    float pdfRevDir = bs.isSpecular() ? 0.0f : v.material->pdf(bs.wi, wo);
+    PathVertex& prev = path[path.size() - 2];
+    prev.pdfRev = PathEvaluator::toArea(pdfRevDir, v, prev);
+    if (beta.isBlack()) return false;
+    ray = Ray{offsetRayOrigin(v.p, v.n, wiW), wiW};
+    return true;
+}
+
 void SubpathGenerator::walk(Ray ray, Spectrum beta, float pdfDir, TransportMode mode,
                             const std::vector<BounceDims>& dims, int maxSurface, const SampleView& sv,
                             TileContext& tile, std::vector<PathVertex>& path) const {
@@ -31,33 +69,42 @@ void SubpathGenerator::walk(Ray ray, Spectrum beta, float pdfDir, TransportMode 
         SurfaceHit hit;
         ++tile.rays;
         if (!scene_.intersect(ray, hit)) return;
-        PathVertex v;
-        v.kind = VertexKind::Surface;
-        v.p = hit.p;
-        v.n = v.ns = hit.ng;
-        v.material = hit.material;
-        v.light = hit.light;
-        v.beta = beta;
-        v.delta = hit.material->isSpecular();
-        v.pdfFwd = PathEvaluator::toArea(pdfDir, path.back(), v);
-        path.push_back(v);
+        pushSurface(hit, beta, pdfDir, path);
         if (b + 1 >= maxSurface || size_t(b) >= dims.size()) return;
+        const BounceDims& d = dims[size_t(b)];
+        if (!scatter(path, -ray.d, sv.get1D(d.lobe), sv.get2D(d.dir), mode, beta, pdfDir, ray)) return;
+    }
+}
 
-        Frame frame(v.ns);
-        Vec3 woW = -ray.d, wo = frame.toLocal(woW);
-        BsdfSample bs;
-        if (!v.material->sample(wo, sv.get1D(dims[size_t(b)].lobe), sv.get2D(dims[size_t(b)].dir), bs, mode)) return;
-        Vec3 wiW = frame.toWorld(bs.wi);
-        beta *= bs.f * (std::abs(bs.wi.z) / bs.pdf);
-        if (mode == TransportMode::Importance) beta *= shadingNormalCorrection(v.ns, v.n, woW, wiW);
-        // Densities of a delta lobe are Dirac terms: stored as 0, read as 1 by the MIS walk.
-        pdfDir = bs.isSpecular() ? 0.0f : bs.pdf;
-        // The reverse density: the previous vertex as sampled from here, arriving from the next one.
-        float pdfRevDir = bs.isSpecular() ? 0.0f : v.material->pdf(bs.wi, wo);
-        PathVertex& prev = path[path.size() - 2];
-        prev.pdfRev = PathEvaluator::toArea(pdfRevDir, path.back(), prev);
-        if (beta.isBlack()) return;
-        ray = Ray{offsetRayOrigin(v.p, v.n, wiW), wiW};
+namespace {
+// Probe j's offsets: the additive recurrences of the golden ratio (1D) and of the plastic number (2D, Roberts'
+// R2), so the walk's own sample and its probes spread evenly over each dimension's unit interval or square.
+inline float shifted(float u, double offset) {
+    double v = double(u) + offset;
+    return std::min(float(v - std::floor(v)), 0x1.fffffep-1f);
+}
+} // namespace
+
+bool SubpathGenerator::specularChainProbe(std::vector<PathVertex>& path, int probe, const SampleView& sv,
+                                          TileContext& tile) const {
+    const int maxSurface = maxDepth_ + 1;
+    Spectrum beta = path.back().beta;
+    Vec3 woW = normalize(path[path.size() - 2].p - path.back().p);
+    for (int b = int(path.size()) - 2;; ++b) { // bounce index of path.back(): the first surface vertex is bounce 0
+        if (b + 1 >= maxSurface || size_t(b) >= camBounce_.size()) return false;
+        const BounceDims& d = camBounce_[size_t(b)];
+        const Point2 u = sv.get2D(d.dir);
+        const float uc = shifted(sv.get1D(d.lobe), probe * 0.6180339887498949);
+        const Point2 uShifted{shifted(u.x, probe * 0.7548776662466927), shifted(u.y, probe * 0.5698402909980532)};
+        float pdfDir = 0;
+        Ray ray;
+        if (!scatter(path, woW, uc, uShifted, TransportMode::Radiance, beta, pdfDir, ray)) return false;
+        SurfaceHit hit;
+        ++tile.rays;
+        if (!scene_.intersect(ray, hit)) return false;
+        pushSurface(hit, beta, pdfDir, path);
+        if (!path.back().delta) return true;
+        woW = -ray.d;
     }
 }
 

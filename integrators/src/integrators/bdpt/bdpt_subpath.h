@@ -30,10 +30,23 @@ public:
     // y_0 on a light and, when the light walk is declared, up to D surface vertices. Empty without lights.
     void lightSubpath(const SampleView& sv, TileContext& tile, std::vector<PathVertex>& out) const;
 
+    // Splitting along a specular chain (bdpt_integrator.cpp): continues `path`, a camera subpath whose last vertex
+    // is a non-delta surface, with one BSDF sample there and then through delta vertices only, until it stops on
+    // a non-delta surface (true) or is lost (false). Probe j >= 1 reads the walk's own values of the same
+    // dimensions shifted by j times a fixed irrational offset: each probe's values are uniform like the walk's,
+    // so each probe is distributed as the walk's own continuation, and together they stratify the BSDF sample.
+    bool specularChainProbe(std::vector<PathVertex>& path, int probe, const SampleView& sv, TileContext& tile) const;
+
 private:
     struct BounceDims {
         int lobe = -1, dir = -1;
     };
+    // Appends the surface vertex found by a ray sampled with solid-angle density pdfDir (0 after a delta lobe).
+    static void pushSurface(const SurfaceHit& hit, const Spectrum& beta, float pdfDir, std::vector<PathVertex>& path);
+    // Samples the BSDF at path.back() (reached from woW, world space, pointing away from it): updates the
+    // throughput, sets the previous vertex's reverse density and returns the next ray; false when nothing is left.
+    static bool scatter(std::vector<PathVertex>& path, const Vec3& woW, float uc, Point2 u, TransportMode mode,
+                        Spectrum& beta, float& pdfDir, Ray& ray);
     void walk(Ray ray, Spectrum beta, float pdfDir, TransportMode mode, const std::vector<BounceDims>& dims,
               int maxSurface, const SampleView& sv, TileContext& tile, std::vector<PathVertex>& path) const;
 
