@@ -21,6 +21,7 @@
 // offset, and the jitter of every point.
 // With the blue-noise flag, the jitter of a point is moved into the pixel's sub-cell of its stratum (named by its
 // cell, the same in every pixel; blue_noise.h), so the pixels of a tile stratify each stratum among themselves.
+#include "batch_isa.h"
 #include "blue_noise.h"
 #include "hash.h"
 #include "patterns.h"
@@ -113,8 +114,7 @@ template <uint32_t Arity, bool Blue>
 //
 // The same values as progressivePoint, computed a chunk of points at a time in three loops the compiler vectorises:
 // 32-bit scrambles (bit reversal by shifts instead of the byte table, the cell by bit compaction instead of the
-// cell table: the same functions), the 64-bit jitter hash, then the floats. Compiled for the baseline ISA and, on
-// x86-64, again for AVX2, picked once at run time; integer arithmetic only, so both give the same bits.
+// cell table: the same functions), the 64-bit jitter hash, then the floats. Compiled once per ISA (batch_isa.h).
 
 // reverseBits without the bits == 0 branch (two shifts: v >> 32 is undefined, (v >> 31) >> 1 is 0).
 [[gnu::always_inline]] inline uint32_t reverseLow(uint32_t v, uint32_t bits) {
@@ -189,17 +189,17 @@ void progressiveBatch(const StratifiedSet& set, const StrataGrid& grid, uint32_t
     progressiveChunks<Arity>(set, grid, first, count, out);
 }
 
-#if defined(__x86_64__)
+#if defined(STIPPLE_BATCH_ISA_CLONES)
 template <uint32_t Arity>
-[[gnu::target("avx2")]] void progressiveBatchAvx2(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+[[STIPPLE_TARGET_AVX2]] void progressiveBatchAvx2(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
                                                   uint32_t count, float* out) {
     progressiveChunks<Arity>(set, grid, first, count, out);
 }
-bool cpuHasAvx2() {
-    __builtin_cpu_init(); // needed before __builtin_cpu_supports during static initialisation
-    return __builtin_cpu_supports("avx2");
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+                                                      uint32_t count, float* out) {
+    progressiveChunks<Arity>(set, grid, first, count, out);
 }
-const bool kHasAvx2 = cpuHasAvx2();
 #endif
 
 template <uint32_t Arity>
@@ -210,8 +210,12 @@ void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t 
             progressivePoint<Arity, true>(set, grid, first + i, out + size_t(i) * Arity, blue);
         return;
     }
-#if defined(__x86_64__)
-    if (kHasAvx2) return progressiveBatchAvx2<Arity>(set, grid, first, count, out);
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+    switch (batchIsa()) {
+    case BatchIsa::Avx512: return progressiveBatchAvx512<Arity>(set, grid, first, count, out);
+    case BatchIsa::Avx2: return progressiveBatchAvx2<Arity>(set, grid, first, count, out);
+    case BatchIsa::Baseline: break;
+    }
 #endif
     progressiveBatch<Arity>(set, grid, first, count, out);
 }
