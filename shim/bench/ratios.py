@@ -31,6 +31,7 @@ def main(path):
         call, pattern, arity, n = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
         ns[(call, pattern, arity, n)] = 1e9 / b["items_per_second"]
     failed = False
+    print(f"batch kernels: {run.get('context', {}).get('batch_isa', '?')}")
     print(f"{'call':<11}{'arity':>6}{'N':>6}  {'independent ns':>15}" +
           "".join(f"  {PATTERNS[p] + ' ns (x)':>20}" for p in SHOWN))
     for call in ("FillPixel", "Sample", "Stream", "StreamFill"):

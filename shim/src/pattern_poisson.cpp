@@ -9,6 +9,7 @@
 // exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
 // dimensions that drew the same stored set and symmetry from pairing their samples point for point.
 // "poisson-seed" serves its fresh set in a hashed random order.
+#include "batch_isa.h"
 #include "error.h"
 #include "hash.h"
 #include "patterns.h"
@@ -86,8 +87,8 @@ inline uint32_t layeredIndex(uint32_t p, uint32_t points, uint32_t seed) {
 
 // The batch: layer by layer, with the map's constants in locals (out may alias nothing the compiler can see).
 template <uint32_t Arity>
-void serveLayered(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count,
-                  float* out) {
+[[gnu::always_inline]] inline void serveLayered(const TorusMap& map, const float* stored, uint32_t points,
+                                                uint32_t first, uint32_t count, float* out) {
     float shift[Arity], sign[Arity];
     uint32_t source[Arity];
     for (uint32_t c = 0; c < Arity; ++c) shift[c] = map.shift[c], sign[c] = map.sign[c], source[c] = map.source[c];
@@ -140,13 +141,44 @@ std::vector<float> freshSeedSet(uint64_t key, const Dimension& dim) {
 
 } // namespace
 
+// The batch kernel compiled once per ISA (batch_isa.h).
+template <uint32_t Arity>
+void serveLayeredBaseline(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count,
+                          float* out) {
+    serveLayered<Arity>(map, stored, points, first, count, out);
+}
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX2]] void serveLayeredAvx2(const TorusMap& map, const float* stored, uint32_t points, uint32_t first,
+                                              uint32_t count, float* out) {
+    serveLayered<Arity>(map, stored, points, first, count, out);
+}
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void serveLayeredAvx512(const TorusMap& map, const float* stored, uint32_t points,
+                                                  uint32_t first, uint32_t count, float* out) {
+    serveLayered<Arity>(map, stored, points, first, count, out);
+}
+#endif
+
+template <uint32_t Arity>
+void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count, float* out) {
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+    switch (batchIsa()) {
+    case BatchIsa::Avx512: return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
+    case BatchIsa::Avx2: return serveLayeredAvx2<Arity>(map, stored, points, first, count, out);
+    case BatchIsa::Baseline: break;
+    }
+#endif
+    serveLayeredBaseline<Arity>(map, stored, points, first, count, out);
+}
+
 void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     const TorusMap map(key, dim.arity, true);
     const float* stored = cachedSet(key, dim);
     switch (dim.arity) {
-    case 1: return serveLayered<1>(map, stored, dim.setSize, first, count, out);
-    case 2: return serveLayered<2>(map, stored, dim.setSize, first, count, out);
-    default: return serveLayered<3>(map, stored, dim.setSize, first, count, out);
+    case 1: return serveBatch<1>(map, stored, dim.setSize, first, count, out);
+    case 2: return serveBatch<2>(map, stored, dim.setSize, first, count, out);
+    default: return serveBatch<3>(map, stored, dim.setSize, first, count, out);
     }
 }
 
