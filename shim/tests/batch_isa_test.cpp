@@ -1,6 +1,6 @@
 // batch_isa_test.cpp — the batch kernels compiled per ISA (batch_isa.h) give the per-point values bitwise.
 // For every variant this CPU runs (baseline, AVX2, AVX-512), forced in turn: fill_pixel equals sample at every
-// index and stream_fill equals stream, for independent, stratified and poisson, arity 1..3, N from 1 to 2^18
+// index and stream_fill equals stream, for independent, stratified, poisson and sobol, arity 1..3, N from 1 to 2^18
 // (progressive grids with and without the cell table, padded grids), k = 1 and 3, runs that start on and off
 // the kernels' 64-point chunks and cross blocks.
 #define BOOST_TEST_MODULE batch_isa
@@ -79,7 +79,8 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
     for (uint32_t isa = 0; isa <= static_cast<uint32_t>(widest); ++isa) {
         stipple::forceBatchIsa(static_cast<stipple::BatchIsa>(isa));
         BOOST_REQUIRE(stipple::batchIsa() == static_cast<stipple::BatchIsa>(isa));
-        for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON})
+        for (uint32_t pattern :
+             {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL})
             for (uint32_t arity = 1; arity <= 3; ++arity)
                 for (uint32_t n : {1u, 2u, 4u, 13u, 16u, 64u, 256u, 4096u, 1u << 17, 1u << 18}) {
                     if (pattern == STIPPLE_PATTERN_POISSON && n > 4096) continue; // generation time, not serving
