@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Per-value cost ratios against independent from one run of shim_shim_bench.
 
-    bin/shim_shim_bench --benchmark_filter='BM_(FillPixel|Sample|Stream|StreamFill)/' \\
-        --benchmark_format=json > bench.json
+    bin/shim_shim_bench [--isa=baseline|avx2|avx512] --benchmark_filter='BM_(FillPixel|Sample|Stream|StreamFill)/' \\
+        [--benchmark_repetitions=3] --benchmark_format=json > bench.json
     python3 shim/bench/ratios.py bench.json
 
 For every call (FillPixel = batch, Sample = random access, Stream = streaming, StreamFill = streaming batch),
@@ -24,13 +24,19 @@ def main(path):
     with open(path) as f:
         run = json.load(f)
     ns = {}
+    # With --benchmark_repetitions the median aggregate of each benchmark is used, else its single run.
+    repeated = any(b.get("aggregate_name") == "median" for b in run["benchmarks"])
     for b in run["benchmarks"]:
         m = re.match(r"BM_(\w+)/pattern:(\d+)/arity:(\d+)/N:(\d+)", b["name"])
-        if not m or b.get("error_occurred"):
+        if not m or b.get("error_occurred") or "items_per_second" not in b:
+            continue
+        if (b.get("aggregate_name") == "median") != repeated:
             continue
         call, pattern, arity, n = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4))
         ns[(call, pattern, arity, n)] = 1e9 / b["items_per_second"]
     failed = False
+    print(f"batch kernels: {run.get('context', {}).get('batch_isa', '?')}" +
+          (" (medians of the repetitions)" if repeated else ""))
     print(f"{'call':<11}{'arity':>6}{'N':>6}  {'independent ns':>15}" +
           "".join(f"  {PATTERNS[p] + ' ns (x)':>20}" for p in SHOWN))
     for call in ("FillPixel", "Sample", "Stream", "StreamFill"):

@@ -8,15 +8,21 @@
 // shim/bench/ratios.py turns one run's JSON into per-value cost ratios against independent.
 // For poisson the cache of the (arity, N) family is warmed before the timed loop; that warm-up (generating every
 // set of the family) is measured apart by BM_PoissonWarmup/<arity>/<N> on a fresh family.
-// Links the internal objects only to reach the cache for warming; sampling goes through the C API.
+// Links the internal objects only to reach the cache for warming and to pick the batch kernels' ISA
+// (--isa=baseline|avx2|avx512: at most what the CPU runs; default the widest, as the library picks; recorded in the
+// JSON context as batch_isa); sampling goes through the C API.
 #include <stipple/stipple.h>
 
+#include "batch_isa.h"
 #include "pmj02_family.h"
 #include "poisson_cache.h"
 
 #include <benchmark/benchmark.h>
 
 #include <bit>
+#include <cstdio>
+#include <cstring>
+#include <string>
 #include <vector>
 
 namespace {
@@ -195,4 +201,26 @@ BENCHMARK(BM_PoissonWarmup)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(0.2);
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    const char* names[] = {"baseline", "avx2", "avx512"};
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], "--isa=", 6) != 0) continue;
+        const std::string wanted = argv[i] + 6;
+        bool known = false;
+        for (uint32_t isa = 0; isa < 3; ++isa)
+            if (wanted == names[isa]) stipple::forceBatchIsa(static_cast<stipple::BatchIsa>(isa)), known = true;
+        if (!known) {
+            std::fprintf(stderr, "shim_shim_bench: --isa=%s; expected baseline, avx2 or avx512\n", wanted.c_str());
+            return 2;
+        }
+        for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+        --argc;
+        --i;
+    }
+    benchmark::AddCustomContext("batch_isa", names[static_cast<uint32_t>(stipple::batchIsa())]);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

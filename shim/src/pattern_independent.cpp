@@ -1,6 +1,7 @@
 // pattern_independent.cpp — independent uniform values: value (p, c) is the hash of (set key, p * arity + c).
 // With the blue-noise flag, point p of the pixels of a tile is stratified across them (blue_noise.h): the top
 // digits of its coordinates come from the pixel's sub-cell, the rest from the same hash as without.
+#include "batch_isa.h"
 #include "blue_noise.h"
 #include "hash.h"
 #include "patterns.h"
@@ -19,13 +20,39 @@ void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out
     for (uint32_t c = 0; c < dim.arity; ++c) out[c] = static_cast<float>(bits[c] >> 8) * 0x1p-24f;
 }
 
+namespace {
+
+// The batch kernel, compiled once per ISA like the other patterns' (batch_isa.h), so that cost ratios against
+// independent compare like with like.
+[[gnu::always_inline]] inline void hashedFloats(uint64_t key, uint64_t begin, uint64_t n, float* out) {
+    for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, begin + i));
+}
+
+void hashedFloatsBaseline(uint64_t key, uint64_t begin, uint64_t n, float* out) { hashedFloats(key, begin, n, out); }
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+[[STIPPLE_TARGET_AVX2]] void hashedFloatsAvx2(uint64_t key, uint64_t begin, uint64_t n, float* out) {
+    hashedFloats(key, begin, n, out);
+}
+[[STIPPLE_TARGET_AVX512]] void hashedFloatsAvx512(uint64_t key, uint64_t begin, uint64_t n, float* out) {
+    hashedFloats(key, begin, n, out);
+}
+#endif
+
+} // namespace
+
 void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue) {
     if (!blue) {
         const uint64_t begin = uint64_t(first) * dim.arity;
         const uint64_t n = uint64_t(count) * dim.arity;
-        for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, begin + i));
-        return;
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+        switch (batchIsa()) {
+        case BatchIsa::Avx512: return hashedFloatsAvx512(key, begin, n, out);
+        case BatchIsa::Avx2: return hashedFloatsAvx2(key, begin, n, out);
+        case BatchIsa::Baseline: break;
+        }
+#endif
+        return hashedFloatsBaseline(key, begin, n, out);
     }
     for (uint32_t i = 0; i < count; ++i) pointIndependent(key, dim, first + i, out + size_t(i) * dim.arity, blue);
 }

@@ -9,6 +9,7 @@
 // exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
 // dimensions that drew the same stored set and symmetry from pairing their samples point for point.
 // "poisson-seed" serves its fresh set in a hashed random order.
+#include "batch_isa.h"
 #include "error.h"
 #include "hash.h"
 #include "patterns.h"
@@ -30,7 +31,7 @@ constexpr uint8_t kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0
 // is mispredicted half the time, which compilers emit for a conditional subtract). r = v - trunc(v) is exact and
 // in (-1, 1); a negative r (its sign bit) gets 1.0 added through integer masks. That sum may round up to 1.0 (as
 // may -0.0 + 1): the last step maps it to 0, a select that is practically never taken.
-inline float wrapUnit(float v) {
+[[gnu::always_inline]] inline float wrapUnit(float v) {
     float r = v - static_cast<float>(static_cast<int32_t>(v));
     const uint32_t negative = std::bit_cast<uint32_t>(r) >> 31;
     r += std::bit_cast<float>((0u - negative) & 0x3f800000u);
@@ -84,44 +85,55 @@ inline uint32_t layeredIndex(uint32_t p, uint32_t points, uint32_t seed) {
     return base + permuteIndexFast(p - base, points - base, seed ^ base);
 }
 
+constexpr uint32_t kSmallServe = 64; // sets this small are served by one loop (their layers are a few points each)
+
 // The batch: layer by layer, with the map's constants in locals (out may alias nothing the compiler can see).
 template <uint32_t Arity>
-void serveLayered(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count,
-                  float* out) {
-    float shift[Arity], sign[Arity];
+[[gnu::always_inline]] inline void serveLayered(const TorusMap& map, const float* stored, uint32_t points,
+                                                uint32_t first, uint32_t count, float* out) {
     uint32_t source[Arity];
-    for (uint32_t c = 0; c < Arity; ++c) shift[c] = map.shift[c], sign[c] = map.sign[c], source[c] = map.source[c];
+    for (uint32_t c = 0; c < Arity; ++c) source[c] = map.source[c];
+    // First the stored coordinates, axis-permuted, at their served positions; then the reflection and shift of
+    // every value in one contiguous loop (vectorised; the same float operations as TorusMap::apply).
+    const auto copy = [&](const float* x, float* o) {
+        for (uint32_t c = 0; c < Arity; ++c) o[c] = x[source[c]];
+    };
     const uint32_t end = first + count;
     uint32_t p = first;
+    if (end <= kSmallServe && std::has_single_bit(points)) {
+        // Small power-of-two sets: point p reads stored point p ^ (seed & (layer size - 1)) directly (what the layer
+        // walk below computes), one loop instead of a setup per layer.
+        for (; p < end; ++p)
+            copy(stored + size_t(p ^ (map.orderSeed & (std::bit_floor(p | 1u) - 1u))) * Arity,
+                 out + size_t(p - first) * Arity);
+    }
     while (p < end) {
         const uint32_t base = p < 2 ? 0 : std::bit_floor(p);
         const uint32_t layerEnd = std::min(end, p < 2 ? 2u : 2 * base);
         if (p >= 2 && points - base < base) { // a clipped last layer
             for (; p < layerEnd; ++p)
-                map.apply<Arity>(stored + size_t(layeredIndex(p, points, map.orderSeed)) * Arity,
-                                 out + size_t(p - first) * Arity);
+                copy(stored + size_t(layeredIndex(p, points, map.orderSeed)) * Arity, out + size_t(p - first) * Arity);
             continue;
         }
         const uint32_t mask = p < 2 ? 0 : (map.orderSeed & (base - 1));
         if (p == base && layerEnd == 2 * base && base >= 2) {
             // A whole layer: XOR is an involution, so walk the stored points in memory order (the family's sets do not
             // stay in cache between pixels) and scatter them to their served positions.
-            for (uint32_t j = 0; j < base; ++j) {
-                const float* x = stored + size_t(base + j) * Arity;
-                float* o = out + size_t(base + (j ^ mask) - first) * Arity;
-                for (uint32_t c = 0; c < Arity; ++c) o[c] = wrapUnit(shift[c] + sign[c] * x[source[c]]);
-            }
+            for (uint32_t j = 0; j < base; ++j)
+                copy(stored + size_t(base + j) * Arity, out + size_t(base + (j ^ mask) - first) * Arity);
             p = layerEnd;
             continue;
         }
-        for (; p < layerEnd; ++p) {
-            const float* x = stored + size_t(base + ((p - base) ^ mask)) * Arity;
-            float* o = out + size_t(p - first) * Arity;
-            for (uint32_t c = 0; c < Arity; ++c) {
-                o[c] = wrapUnit(shift[c] + sign[c] * x[source[c]]);
-            }
-        }
+        for (; p < layerEnd; ++p)
+            copy(stored + size_t(base + ((p - base) ^ mask)) * Arity, out + size_t(p - first) * Arity);
     }
+    float shift[Arity], sign[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) shift[c] = map.shift[c], sign[c] = map.sign[c];
+    for (uint32_t i = 0; i < count; ++i)
+        for (uint32_t c = 0; c < Arity; ++c) {
+            float& v = out[size_t(i) * Arity + c];
+            v = wrapUnit(shift[c] + sign[c] * v);
+        }
 }
 
 const float* cachedSet(uint64_t key, const Dimension& dim) {
@@ -140,13 +152,44 @@ std::vector<float> freshSeedSet(uint64_t key, const Dimension& dim) {
 
 } // namespace
 
+// The batch kernel compiled once per ISA (batch_isa.h).
+template <uint32_t Arity>
+void serveLayeredBaseline(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count,
+                          float* out) {
+    serveLayered<Arity>(map, stored, points, first, count, out);
+}
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX2]] void serveLayeredAvx2(const TorusMap& map, const float* stored, uint32_t points, uint32_t first,
+                                              uint32_t count, float* out) {
+    serveLayered<Arity>(map, stored, points, first, count, out);
+}
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void serveLayeredAvx512(const TorusMap& map, const float* stored, uint32_t points,
+                                                  uint32_t first, uint32_t count, float* out) {
+    serveLayered<Arity>(map, stored, points, first, count, out);
+}
+#endif
+
+template <uint32_t Arity>
+void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count, float* out) {
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+    switch (batchIsa()) {
+    case BatchIsa::Avx512: return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
+    case BatchIsa::Avx2: return serveLayeredAvx2<Arity>(map, stored, points, first, count, out);
+    case BatchIsa::Baseline: break;
+    }
+#endif
+    serveLayeredBaseline<Arity>(map, stored, points, first, count, out);
+}
+
 void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     const TorusMap map(key, dim.arity, true);
     const float* stored = cachedSet(key, dim);
     switch (dim.arity) {
-    case 1: return serveLayered<1>(map, stored, dim.setSize, first, count, out);
-    case 2: return serveLayered<2>(map, stored, dim.setSize, first, count, out);
-    default: return serveLayered<3>(map, stored, dim.setSize, first, count, out);
+    case 1: return serveBatch<1>(map, stored, dim.setSize, first, count, out);
+    case 2: return serveBatch<2>(map, stored, dim.setSize, first, count, out);
+    default: return serveBatch<3>(map, stored, dim.setSize, first, count, out);
     }
 }
 

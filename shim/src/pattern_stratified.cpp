@@ -21,6 +21,7 @@
 // offset, and the jitter of every point.
 // With the blue-noise flag, the jitter of a point is moved into the pixel's sub-cell of its stratum (named by its
 // cell, the same in every pixel; blue_noise.h), so the pixels of a tile stratify each stratum among themselves.
+#include "batch_isa.h"
 #include "blue_noise.h"
 #include "hash.h"
 #include "patterns.h"
@@ -109,6 +110,122 @@ template <uint32_t Arity, bool Blue>
     }
 }
 
+// ---- progressive grids, the batch path ----------------------------------------------------------------------
+//
+// The same values as progressivePoint, computed a chunk of points at a time in three loops the compiler vectorises:
+// 32-bit scrambles (bit reversal by shifts instead of the byte table, the cell by bit compaction instead of the
+// cell table: the same functions), the 64-bit jitter hash, then the floats. Compiled for AVX2 and AVX-512
+// (batch_isa.h); the baseline ISA runs the per-point code.
+
+[[gnu::always_inline]] inline uint32_t reverse32(uint32_t v) {
+    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+    v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+    v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+    return (v >> 16) | (v << 16);
+}
+
+// reverseBits without the bits == 0 branch (two shifts: v >> 32 is undefined, (v >> 31) >> 1 is 0).
+[[gnu::always_inline]] inline uint32_t reverseLow(uint32_t v, uint32_t bits) {
+    return (reverse32(v) >> (31 - bits)) >> 1;
+}
+
+// reverseBits(i, 32) for the 64 lanes of a chunk.
+struct ReversedLanes {
+    uint32_t word[64];
+    constexpr ReversedLanes() : word() {
+        for (uint32_t i = 0; i < 64; ++i) word[i] = reverseBits(i, 32);
+    }
+};
+inline constexpr ReversedLanes kReversedLanes{};
+
+template <uint32_t Arity>
+[[gnu::always_inline]] inline void progressiveChunks(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+                                                     uint32_t count, float* out) {
+    constexpr uint32_t kChunk = 64;
+    const uint32_t bits = grid.pointBits;
+    const uint32_t mask = (1u << bits) - 1u;
+    const uint32_t orderSeed = set.orderSeed, valueSeed = set.valueSeed;
+    const uint64_t jitterKey = set.jitterKey;
+    uint32_t axisBits[3] = {0, 0, 0}, topShift[3] = {0, 0, 0}, jitterShift[3] = {0, 0, 0};
+    for (uint32_t c = 0; c < Arity; ++c) {
+        axisBits[c] = grid.axisBits[c];
+        topShift[c] = 24 - axisBits[c];
+        jitterShift[c] = 8 + axisBits[c];
+    }
+    alignas(64) uint32_t q[kChunk];
+    alignas(64) uint32_t jitter[3][kChunk];
+    for (uint32_t base = 0; base < count; base += kChunk) {
+        const uint32_t n = count - base < kChunk ? count - base : kChunk;
+        const uint32_t chunkFirst = first + base;
+        if (n == kChunk && chunkFirst % kChunk == 0) {
+            // An aligned chunk: chunkFirst and i < 64 have disjoint bits, so reverse(chunkFirst + i) is
+            // reverse(chunkFirst) | reverse(i), the latter from a table of 64 words read in order.
+            const uint32_t reversedFirst = reverseBits(chunkFirst, 32);
+            for (uint32_t i = 0; i < kChunk; ++i) {
+                const uint32_t reversed = ((reversedFirst | kReversedLanes.word[i]) >> (31 - bits)) >> 1;
+                const uint32_t shuffled = reverseLow(laineKarras(reversed, orderSeed) & mask, bits);
+                q[i] = laineKarras(shuffled, valueSeed) & mask;
+            }
+        } else {
+            for (uint32_t i = 0; i < n; ++i) {
+                const uint32_t shuffled =
+                    reverseLow(laineKarras(reverseLow(chunkFirst + i, bits), orderSeed) & mask, bits);
+                q[i] = laineKarras(shuffled, valueSeed) & mask;
+            }
+        }
+        for (uint32_t i = 0; i < n; ++i) {
+            if constexpr (Arity == 1) {
+                jitter[0][i] =
+                    static_cast<uint32_t>(((jitterKey ^ (uint64_t(q[i]) * kGolden64)) * 0xd1342543de82ef95ull) >> 32);
+            } else {
+                const uint64_t h = hashAt(jitterKey, q[i]);
+                if constexpr (Arity == 2) {
+                    jitter[0][i] = static_cast<uint32_t>(h >> 32);
+                    jitter[1][i] = static_cast<uint32_t>(h);
+                } else {
+                    for (uint32_t c = 0; c < 3; ++c) jitter[c][i] = static_cast<uint32_t>(h >> (43 - 21 * c)) << 11;
+                }
+            }
+        }
+        float* o = out + size_t(base) * Arity;
+        for (uint32_t i = 0; i < n; ++i) {
+            // progressiveCell with one reversal of q for all axes: q's bit a * t + c (axis c's bit t from the
+            // top) is bit 31 - a * t - c of r, so compacting r's bits of the right residue mod a lists axis c's
+            // bits from the top, and a shift drops the unused low ones (q's bits past pointBits are zero).
+            const uint32_t r = reverse32(q[i]);
+            uint32_t cell[3];
+            if constexpr (Arity == 1) {
+                cell[0] = (r >> (31 - axisBits[0])) >> 1;
+            } else if constexpr (Arity == 2) {
+                cell[0] = compactEvery2(r >> 1) >> (16 - axisBits[0]);
+                cell[1] = compactEvery2(r) >> (16 - axisBits[1]);
+            } else {
+                cell[0] = compactEvery3(r >> 4) >> (10 - axisBits[0]); // compactEvery3 keeps 10 bits
+                cell[1] = compactEvery3(r >> 3) >> (10 - axisBits[1]);
+                cell[2] = compactEvery3(r >> 2) >> (10 - axisBits[2]);
+            }
+            for (uint32_t c = 0; c < Arity; ++c)
+                o[size_t(i) * Arity + c] = static_cast<float>(static_cast<int32_t>((cell[c] << topShift[c]) |
+                                                                                   (jitter[c][i] >> jitterShift[c]))) *
+                                           0x1p-24f;
+        }
+    }
+}
+
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX2]] void progressiveBatchAvx2(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+                                                  uint32_t count, float* out) {
+    progressiveChunks<Arity>(set, grid, first, count, out);
+}
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+                                                      uint32_t count, float* out) {
+    progressiveChunks<Arity>(set, grid, first, count, out);
+}
+#endif
+
 template <uint32_t Arity>
 void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue) {
@@ -117,6 +234,15 @@ void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t 
             progressivePoint<Arity, true>(set, grid, first + i, out + size_t(i) * Arity, blue);
         return;
     }
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+    switch (batchIsa()) {
+    case BatchIsa::Avx512: return progressiveBatchAvx512<Arity>(set, grid, first, count, out);
+    case BatchIsa::Avx2: return progressiveBatchAvx2<Arity>(set, grid, first, count, out);
+    case BatchIsa::Baseline: break;
+    }
+#endif
+    // Without wide vectors the per-point code (byte and cell tables) is the faster one: 4.4 against 6.8 ns per
+    // value for 1D N = 4096 (SSE2 has no 32-bit lane multiply).
     for (uint32_t i = 0; i < count; ++i)
         progressivePoint<Arity, false>(set, grid, first + i, out + size_t(i) * Arity, nullptr);
 }

@@ -60,11 +60,6 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + shim.lastError());
     clockSeconds_ = emptyClockInterval();
-    // Drawn a pixel's dimension at a time where the batch call is the cheaper path: poisson-seed generates a whole
-    // set for any request; poisson reads a stored set in order in the batch call, at about half the cost per value
-    // of its random access (192x192 Cornell box, 32 spp, one thread: 1.13 s against 1.65 s lazily, stratified
-    // 1.51 s). The values are the same either way (the shim's batch and random-access calls agree bitwise).
-    wholePixel_ = name == "poisson-seed" || name == "poisson";
 }
 
 PixelSampler::~PixelSampler() { shim_.api().sampler_release(sampler_); }
@@ -72,13 +67,7 @@ PixelSampler::~PixelSampler() { shim_.api().sampler_release(sampler_); }
 void PixelSampler::startPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
     out.x_ = x;
     out.y_ = y;
-    std::fill(out.heldSample_.begin(), out.heldSample_.end(), PixelSamples::kNone);
-}
-
-void PixelSampler::draw(uint32_t x, uint32_t y, uint32_t i, uint32_t d, float* out, size_t count) const {
-    if (shim_.api().sampler_sample(sampler_, x, y, i, d, out, count) != STIPPLE_OK)
-        throw ShimError("stipple_sampler_sample(" + std::to_string(x) + ", " + std::to_string(y) + ", sample " +
-                        std::to_string(i) + ", dimension " + std::to_string(d) + ") failed: " + shim_.lastError());
+    std::fill(out.held_.begin(), out.held_.end(), uint8_t(0));
 }
 
 void PixelSampler::drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const {
@@ -87,43 +76,23 @@ void PixelSampler::drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, siz
                         std::to_string(d) + ") failed: " + shim_.lastError());
 }
 
-PixelSamples::PixelSamples(const PixelSampler& sampler)
-    : sampler_(&sampler), wholePixel_(sampler.drawsWholePixel()), spp_(sampler.samplesPerPixel()) {
-    size_t total = 0;
+PixelSamples::PixelSamples(const PixelSampler& sampler) : sampler_(&sampler) {
+    pixelOffset_.push_back(0);
     for (const Dimension& d : sampler.layout().dimensions()) {
-        offset_.push_back(total);
         arity_.push_back(d.arity);
-        total += size_t(d.count) * d.arity;
+        perSample_.push_back(size_t(d.count) * d.arity);
+        pixelOffset_.push_back(pixelOffset_.back() + size_t(sampler.samplesPerPixel()) * perSample_.back());
     }
-    values_.assign(total + 1, 0.0f); // + 1: a valid address for an empty layout
-    heldSample_.assign(offset_.size(), kNone);
-    if (wholePixel_) {
-        pixelOffset_.push_back(0);
-        for (size_t d = 0; d < offset_.size(); ++d)
-            pixelOffset_.push_back(pixelOffset_.back() +
-                                   size_t(spp_) * ((d + 1 < offset_.size() ? offset_[d + 1] : total) - offset_[d]));
-        pixelValues_.assign(pixelOffset_.back() + 1, 0.0f);
-    }
+    pixelValues_.assign(pixelOffset_.back() + 1, 0.0f); // + 1: a valid address for an empty layout
+    held_.assign(arity_.size(), 0);
 }
 
 void PixelSamples::fetchPixel(uint32_t dim) const {
-    auto start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     sampler_->drawPixel(x_, y_, dim, &pixelValues_[pixelOffset_[dim]], pixelOffset_[dim + 1] - pixelOffset_[dim]);
-    samplerSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    heldSample_[dim] = 0;
-}
-
-void PixelSamples::fetch(uint32_t dim, uint32_t sampleIndex) const {
-    const size_t count = (dim + 1 < offset_.size() ? offset_[dim + 1] : values_.size() - 1) - offset_[dim];
-    if ((draws_++ & 15) == 0) {
-        auto start = std::chrono::steady_clock::now();
-        sampler_->draw(x_, y_, sampleIndex, dim, &values_[offset_[dim]], count);
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        samplerSeconds += 16.0 * std::max(0.0, elapsed - sampler_->clockSeconds_);
-    } else {
-        sampler_->draw(x_, y_, sampleIndex, dim, &values_[offset_[dim]], count);
-    }
-    heldSample_[dim] = sampleIndex;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    samplerSeconds += std::max(0.0, elapsed - sampler_->clockSeconds_);
+    held_[dim] = 1;
 }
 
 } // namespace stipple::render

@@ -1,9 +1,11 @@
 // A shim sampler for one render plus the per-thread cache and the per-(pixel, sample) view integrators read.
-// Values are drawn lazily: the first read of a dimension in a pixel sample asks the shim for that sample's k
-// values of that dimension (stipple_sampler_sample, random access), so a path that ends at its first bounce never
-// pays for the dimensions of deeper bounces (poisson-seed, which generates a whole set for any request, and poisson,
-// whose batch call is its cheaper path, are drawn a pixel's dimension at a time). Time inside the shim is
-// accumulated per cache (see PixelSamples).
+// Values are drawn lazily, a dimension at a time: the first read of dimension d by any sample of a pixel asks the
+// shim for all N samples of d in that pixel (stipple_sampler_fill_pixel, the batch call), so a dimension that no
+// path of the pixel reaches (the deeper bounces of paths that end early) is never drawn. One batch call per
+// (pixel, dimension) rather than one random-access call per (pixel sample, dimension): a call costs ~25-35 ns
+// whatever it returns, while the batch call costs ~1 ns per value (shim/README.md), so the batch is cheaper as soon
+// as a few of a pixel's N samples reach d. The values are the same either way (the shim's batch and random-access
+// calls agree bitwise). Time inside the shim is accumulated per cache (see PixelSamples).
 #pragma once
 
 #include "sampling/sample_layout.h"
@@ -30,19 +32,15 @@ public:
     const SampleLayout& layout() const { return layout_; }
     // Points `out` at pixel (x, y); values are drawn when first read.
     void startPixel(uint32_t x, uint32_t y, PixelSamples& out) const;
-    // poisson-seed and poisson are drawn a pixel's dimension at a time (their batch call is the cheaper path).
-    bool drawsWholePixel() const { return wholePixel_; }
 
 private:
     friend class PixelSamples;
-    // Sample i's k values of dimension d into out (k*arity floats). Throws ShimError on failure.
-    void draw(uint32_t x, uint32_t y, uint32_t i, uint32_t d, float* out, size_t count) const;
+    // All N samples' k values of dimension d into out (N*k*arity floats). Throws ShimError on failure.
     void drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const;
 
     const ShimLibrary& shim_;
     stipple_sampler sampler_ = nullptr;
     double clockSeconds_ = 0; // an empty steady_clock interval
-    bool wholePixel_ = false;
     uint32_t spp_;
     SampleLayout layout_;
 };
@@ -52,38 +50,27 @@ private:
 class PixelSamples {
 public:
     explicit PixelSamples(const PixelSampler& sampler);
-    // Time spent inside the shim, estimated from every 16th draw (reading the clock costs more than a draw): the
-    // timed draws' total times 16, each timed interval minus the clock's own cost (the mean of 4096 empty
-    // intervals, measured once per sampler), as benchmark harnesses subtract their timer overhead.
+    // Time spent inside the shim: every batch call is timed (it lasts far longer than reading the clock), each
+    // interval minus the clock's own cost (the mean of 4096 empty intervals, measured once per sampler), as
+    // benchmark harnesses subtract their timer overhead.
     mutable double samplerSeconds = 0;
 
 private:
     friend class PixelSampler;
     friend class SampleView;
     const float* values(uint32_t dim, uint32_t sampleIndex) const {
-        if (wholePixel_) {
-            if (heldSample_[dim] == kNone) fetchPixel(dim);
-            return &pixelValues_[pixelOffset_[dim] +
-                                 size_t(sampleIndex) * (pixelOffset_[dim + 1] - pixelOffset_[dim]) / spp_];
-        }
-        if (heldSample_[dim] != sampleIndex) fetch(dim, sampleIndex);
-        return &values_[offset_[dim]];
+        if (!held_[dim]) fetchPixel(dim);
+        return &pixelValues_[pixelOffset_[dim] + size_t(sampleIndex) * perSample_[dim]];
     }
     void fetchPixel(uint32_t dim) const;
-    void fetch(uint32_t dim, uint32_t sampleIndex) const;
 
     const PixelSampler* sampler_;
     uint32_t x_ = 0, y_ = 0;
-    mutable std::vector<float> values_;        // per dimension, k*arity floats of the held sample
-    mutable std::vector<uint32_t> heldSample_; // per dimension, the sample index held (kNone: none)
-    mutable uint64_t draws_ = 0;
-    std::vector<size_t> offset_;
-    std::vector<uint32_t> arity_;
-    bool wholePixel_ = false; // the sampler's drawsWholePixel()
-    uint32_t spp_ = 0;
-    mutable std::vector<float> pixelValues_; // whole-pixel mode: per dimension, N*k*arity floats
+    mutable std::vector<uint8_t> held_;      // per dimension: drawn for the current pixel
+    std::vector<uint32_t> arity_;            // per dimension
+    std::vector<size_t> perSample_;          // per dimension, k*arity floats of one sample
+    mutable std::vector<float> pixelValues_; // per dimension, N*k*arity floats of the current pixel
     std::vector<size_t> pixelOffset_;        // dimension count + 1 entries
-    static constexpr uint32_t kNone = 0xffffffffu;
 };
 
 // The values of one pixel sample. Reading an undeclared dimension (index < 0) returns 0.5: integrators only do

@@ -1,0 +1,99 @@
+// batch_isa_test.cpp — the batch kernels compiled per ISA (batch_isa.h) give the per-point values bitwise.
+// For every variant this CPU runs (baseline, AVX2, AVX-512), forced in turn: fill_pixel equals sample at every
+// index and stream_fill equals stream, for independent, stratified, poisson and sobol, arity 1..3, N from 1 to 2^18
+// (progressive grids with and without the cell table, padded grids), k = 1 and 3, runs that start on and off
+// the kernels' 64-point chunks and cross blocks.
+#define BOOST_TEST_MODULE batch_isa
+#include <boost/test/unit_test.hpp>
+
+#include "batch_isa.h"
+
+#include <stipple/stipple.h>
+
+#include <cstring>
+#include <vector>
+
+namespace {
+
+stipple_sampler makeSampler(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
+    stipple_dimension_desc dim{};
+    dim.struct_size = sizeof dim;
+    dim.arity = arity;
+    dim.count = k;
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.pattern = pattern;
+    desc.samples_per_pixel = n;
+    desc.dimension_count = 1;
+    desc.seed = 0x5eedu + n;
+    desc.dimensions = &dim;
+    stipple_sampler s = nullptr;
+    BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK, stipple_last_error_message());
+    return s;
+}
+
+bool sameBits(const float* a, const float* b, size_t count) { return std::memcmp(a, b, count * sizeof(float)) == 0; }
+
+// Indices checked: all for small sets, a spread of them (chunk borders included) for large ones.
+std::vector<uint32_t> indices(uint32_t n) {
+    std::vector<uint32_t> out;
+    if (n <= 300) {
+        for (uint32_t i = 0; i < n; ++i) out.push_back(i);
+        return out;
+    }
+    for (uint32_t i : {0u, 1u, 63u, 64u, 65u, 127u, 128u}) out.push_back(i);
+    for (uint32_t i = 0; i < 200; ++i) out.push_back(uint32_t((uint64_t(i) * 2654435761u) % n));
+    out.push_back(n - 1);
+    return out;
+}
+
+void checkPattern(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
+    stipple_sampler s = makeSampler(pattern, n, arity, k);
+    const size_t perSample = size_t(k) * arity;
+    std::vector<float> full(size_t(n) * perSample), one(perSample);
+    BOOST_REQUIRE(stipple_sampler_fill_pixel(s, 5, 9, 0, full.data(), full.size()) == STIPPLE_OK);
+    uint32_t mismatches = 0;
+    for (uint32_t i : indices(n)) {
+        BOOST_REQUIRE(stipple_sampler_sample(s, 5, 9, i, 0, one.data(), one.size()) == STIPPLE_OK);
+        mismatches += !sameBits(one.data(), full.data() + i * perSample, perSample);
+    }
+    // stream_fill against stream: a run starting off the chunk grid and crossing into the next block.
+    const uint32_t first = n > 3 ? n - 3 + 64 * (n > 128) : 1;
+    const uint32_t count = n + 70;
+    std::vector<float> run(size_t(count) * arity);
+    BOOST_REQUIRE(stipple_sampler_stream_fill(s, 2, 3, first, count, 11, arity, run.data(), run.size()) == STIPPLE_OK);
+    for (uint32_t j = 0; j < count; j += (count > 400 ? 7 : 1)) {
+        BOOST_REQUIRE(stipple_sampler_stream(s, 2, 3, first + j, 11, arity, one.data(), arity) == STIPPLE_OK);
+        mismatches += !sameBits(one.data(), run.data() + size_t(j) * arity, arity);
+    }
+    BOOST_CHECK_MESSAGE(mismatches == 0, "pattern " << pattern << " N " << n << " arity " << arity << " k " << k << ": "
+                                                    << mismatches << " values differ");
+    stipple_sampler_release(s);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
+    const stipple::BatchIsa widest = stipple::widestBatchIsa();
+    BOOST_TEST_MESSAGE("widest batch ISA on this CPU: " << static_cast<uint32_t>(widest));
+    for (uint32_t isa = 0; isa <= static_cast<uint32_t>(widest); ++isa) {
+        stipple::forceBatchIsa(static_cast<stipple::BatchIsa>(isa));
+        BOOST_REQUIRE(stipple::batchIsa() == static_cast<stipple::BatchIsa>(isa));
+        for (uint32_t pattern :
+             {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL})
+            for (uint32_t arity = 1; arity <= 3; ++arity)
+                for (uint32_t n : {1u, 2u, 4u, 13u, 16u, 64u, 256u, 4096u, 1u << 17, 1u << 18}) {
+                    if (pattern == STIPPLE_PATTERN_POISSON && n > 4096) continue; // generation time, not serving
+                    checkPattern(pattern, n, arity, 1);
+                    if (n <= 256) checkPattern(pattern, n, arity, 3);
+                }
+    }
+    stipple::forceBatchIsa(widest);
+}
+
+BOOST_AUTO_TEST_CASE(forcing_is_clamped_to_the_cpu) {
+    const stipple::BatchIsa widest = stipple::widestBatchIsa();
+    stipple::forceBatchIsa(stipple::BatchIsa::Avx512);
+    BOOST_CHECK(stipple::batchIsa() == widest);
+    stipple::forceBatchIsa(widest);
+}
