@@ -10,8 +10,12 @@ rm -rf "$work" && mkdir -p "$work" || exit 1
 fail() { echo "FAILED: $*"; exit 1; }
 temps() { find "$work" -maxdepth 1 -name '*.stipple-tmp-*' | wc -l; }
 
+t0=$(date +%s.%N)
 "$bin" "$big" -o "$work/report" --cache "$work/cache" --threads 2 > "$work/log" 2>&1 || { cat "$work/log"; fail "big run"; }
+full=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')  # a whole run with references to render, as below
 ls "$work/report/crops" | grep -q poisson || fail "the big matrix made no poisson crop"
+files() { (cd "$work/report" && find . -type f | sort); }
+bigfiles=$(files)  # what a complete report of the big matrix holds
 "$bin" "$small" -o "$work/report" --cache "$work/cache" --threads 2 > "$work/log" 2>&1 || { cat "$work/log"; fail "small run"; }
 ls "$work/report/crops" "$work/report/plots" | grep -qE "poisson|veach" && fail "the previous matrix's files remain: $(ls -R "$work/report")"
 grep -q '"matrix": "cache"' "$work/report/results.json" || grep -q 'cache' "$work/report/results.json" || fail "results.json is not the new matrix's"
@@ -19,14 +23,19 @@ echo "ok: a reused folder holds only the current matrix's files"
 
 snapshot() { (cd "$work/report" && find . -type f | sort | xargs md5sum); }
 before=$(snapshot)
-for delay in 0.2 0.6 1.0 1.5; do
+# SIGTERM at fixed moments and at fractions of a whole run, so some land mid-run however fast the machine is.
+for delay in 0.2 $(awk -v t="$full" 'BEGIN { for (f = 0.1; f < 1; f += 0.2) printf "%.3f ", t * f }') 1.5; do
   rm -rf "$work/fresh-cache"  # a reference to render: the run takes a while
   "$bin" "$big" -o "$work/report" --cache "$work/fresh-cache" --threads 2 > "$work/log" 2>&1 & pid=$!
   sleep $delay; kill -TERM $pid 2> /dev/null; wait $pid; rc=$?
   [ "$(temps)" -eq 0 ] || fail "SIGTERM after ${delay}s (rc $rc) left a temporary folder: $(ls -a "$work")"
   after=$(snapshot)
   if [ $rc -eq 0 ] || [ $rc -eq 1 ]; then before=$after; echo "run finished before SIGTERM at ${delay}s"; continue; fi
-  [ "$after" = "$before" ] || fail "SIGTERM after ${delay}s (rc $rc) changed the previous report"
+  if [ "$after" != "$before" ]; then
+    # SIGTERM after the swap (the run was cleaning up): the folder must then be the new report, whole.
+    [ "$(files)" = "$bigfiles" ] || fail "SIGTERM after ${delay}s (rc $rc) left a report that is neither the old nor a whole new one: $(files)"
+    before=$after; echo "ok: SIGTERM after ${delay}s came after the swap: rc $rc, the new report whole"; continue
+  fi
   echo "ok: SIGTERM after ${delay}s: rc $rc, previous report intact, no temporary folder"
 done
 
