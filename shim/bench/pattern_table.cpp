@@ -267,7 +267,8 @@ int main(int argc, char** argv) {
             }
         } else {
             std::cout << "usage: " << argv[0]
-                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--blue-only] [--ns N,N,...] [--shifts S (1000)]\n";
+                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--blue-only] [--ns N,N,...] [--shifts "
+                         "S (1000)]\n";
             return a == "-h" || a == "--help" ? 0 : 2;
         }
     }
@@ -338,18 +339,18 @@ int main(int argc, char** argv) {
         const double sigma = 0.15, root2 = std::sqrt(2.0), pi = 3.14159265358979323846;
         const double cx = 0.3, cy = 0.6;
         auto mass = [&](double c) {
-            return sigma * std::sqrt(2 * pi) / 2 * (std::erf((1 - c) / (sigma * root2)) + std::erf(c / (sigma * root2)));
+            return sigma * std::sqrt(2 * pi) / 2 *
+                   (std::erf((1 - c) / (sigma * root2)) + std::erf(c / (sigma * root2)));
         };
-        const std::vector<Integrand> gs = {
-            g2[2],
-            g2[1],
-            {"ramp", [](const float* p) { return double(p[0]) + double(p[1]); }, 1.0},
-            {"gaussian off centre",
-             [=](const float* p) {
-                 const double dx = p[0] - cx, dy = p[1] - cy;
-                 return std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
-             },
-             mass(cx) * mass(cy)}};
+        const std::vector<Integrand> gs = {g2[2],
+                                           g2[1],
+                                           {"ramp", [](const float* p) { return double(p[0]) + double(p[1]); }, 1.0},
+                                           {"gaussian off centre",
+                                            [=](const float* p) {
+                                                const double dx = p[0] - cx, dy = p[1] - cy;
+                                                return std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
+                                            },
+                                            mass(cx) * mass(cy)}};
         std::ofstream md(outDir / "blue_noise.md");
         std::ofstream csv(outDir / "spectrum_blue.csv");
         csv << "pattern,flag,N,radius,power_over_mse\n";
@@ -410,8 +411,8 @@ int main(int argc, char** argv) {
                         return fmt(r.ratio, 3) + " [" + fmt(r.low, 3) + ", " + fmt(r.high, 3) + "]";
                     };
                     md << "| " << pattern << " | " << n << " | " << (flag ? "blue noise" : "-") << " | "
-                       << std::scientific << std::setprecision(3) << mse << std::fixed << " | " << ratioCell(0)
-                       << " | " << fmt(ratio, 1);
+                       << std::scientific << std::setprecision(3) << mse << std::fixed << " | " << ratioCell(0) << " | "
+                       << fmt(ratio, 1);
                     for (size_t gi = 1; gi < gs.size(); ++gi) md << " | " << ratioCell(gi);
                     md << " |\n";
                     if (!flag) plainSq = imageMse;

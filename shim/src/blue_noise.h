@@ -2,11 +2,12 @@
 //
 // STIPPLE_SAMPLER_FLAG_BLUE_NOISE. One mechanism: a lattice map per tile of 64 x 64 pixels and dimension. Pixel
 // p = (x, y) of the tile maps to c(p) = (A p + o) mod Q per axis (A an integer arity x 2 matrix, o an offset).
-// Mode k of any periodic function of c is, across the tile, a plane wave of pixel frequency A^T k / Q; A is
-// chosen (shim/bench/lattice_search.py) so that the small modes, which carry a smooth integrand's error, land far
-// above the low band. Within a tile the error of a fixed integrand is therefore a sum of high-frequency gratings,
-// like an ordered dither. Per (tile, dimension, stream, block) a hashed signed permutation of the pixel axes and
-// of the value axes and random offsets make neighbouring tiles and different dimensions use different gratings.
+// Mode k of any periodic function of c is, across the tile, a plane wave of pixel frequency A^T k / Q; A (one per
+// arity and LatticeUse, blue_noise.cpp; shim/bench/lattice_search.py) is chosen so that the modes which carry a
+// smooth integrand's error land far above the low band. Within a tile the error of a fixed integrand is
+// therefore a sum of high-frequency gratings, like an ordered dither. Per (tile, dimension, stream, block) a
+// hashed signed permutation of the pixel axes and of the value axes and random offsets make neighbouring tiles
+// and different dimensions use different gratings.
 // - stratified and independent: stratification across pixels. Every stratum (independent: the unit square, once
 //   per point index) is cut into 64 x 64 sub-cells (3D: per axis; 1D: 4096); the pixel's point goes to sub-cell
 //   tent(c(p)) with an offset o hashed per stratum, and keeps its own jitter inside it. tent(c) = 2c below Q/2,

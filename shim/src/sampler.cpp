@@ -109,9 +109,9 @@ void Sampler::point(const SetRef& set, const Dimension& dim, uint32_t p, float* 
 // and the per-pixel part from the plain set key, so blocks and streams are blue noise on their own and every
 // sample stays uniform.
 void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const {
-    const uint64_t tileKey = streamWord(
-        setKeyFrom(tileSeedKey_, set.pixelX >> kBlueNoiseTileLog2, set.pixelY >> kBlueNoiseTileLog2, set.d),
-        set.streamArity);
+    const uint64_t tileKey =
+        streamWord(setKeyFrom(tileSeedKey_, set.pixelX >> kBlueNoiseTileLog2, set.pixelY >> kBlueNoiseTileLog2, set.d),
+                   set.streamArity);
     switch (pattern_) {
     case STIPPLE_PATTERN_INDEPENDENT:
     case STIPPLE_PATTERN_STRATIFIED: { // stratification across the pixels of a tile

@@ -6,7 +6,7 @@
 // patterns every pixel of a tile serves the same set, toroidally shifted.
 // Statistical (fixed seeds): on the Gaussian (sigma 0.15) in every pixel of 128 x 128 images at N = 16, for every
 // pattern but poisson-seed, the low-quarter energy of the per-pixel error (|f| < 1/8 cycle per pixel, white /
-// measured) is >= 10 with the flag (measured 30-450 on these seeds: the margin is >= 3x), and the flag does not
+// measured) is >= 10 with the flag (measured 45-590 on these seeds: the margin is >= 4x), and the flag does not
 // raise the per-pixel MSE: the flag/plain ratio's lower bound at family-wise alpha = 0.01 (Sidak over the 5
 // patterns, one-sided) is <= 1. The units of that ratio are 64 x 64 tiles (independent with the flag: each has
 // its own offsets and base set), 4 images x 4 tiles per side.
@@ -79,8 +79,8 @@ BOOST_AUTO_TEST_CASE(a_tile_of_pixels_stratifies_every_stratum) {
 
 BOOST_AUTO_TEST_CASE(the_pixels_of_a_tile_shift_one_set) {
     // poisson, pmj02, sobol: pixel p's point i minus pixel q's point i (mod 1) is the same for every i, in a tile.
-    for (uint32_t pattern : {uint32_t(STIPPLE_PATTERN_POISSON), uint32_t(STIPPLE_PATTERN_PMJ02),
-                             uint32_t(STIPPLE_PATTERN_SOBOL)}) {
+    for (uint32_t pattern :
+         {uint32_t(STIPPLE_PATTERN_POISSON), uint32_t(STIPPLE_PATTERN_PMJ02), uint32_t(STIPPLE_PATTERN_SOBOL)}) {
         auto s = makeFlagged(pattern, 64, 0x5b1f, 2, kBlue);
         const std::vector<float> a = fillPixel(s.get(), 128, 64, 0);
         for (uint32_t x : {129u, 150u, 191u}) {
@@ -185,7 +185,7 @@ BOOST_AUTO_TEST_CASE(the_error_is_blue_at_no_loss_of_per_pixel_mse) {
         const double low = ratio * std::exp(-z * se);
         BOOST_TEST_MESSAGE(patternName(pattern) << ": white / low band " << whiteOverBand << ", MSE flag / plain "
                                                 << ratio << " [" << low << ", " << ratio * std::exp(z * se) << "]");
-        BOOST_CHECK_MESSAGE(low <= 1.0, patternName(pattern) << ": MSE flag / plain " << ratio << ", lower bound "
-                                                             << low << " > 1");
+        BOOST_CHECK_MESSAGE(low <= 1.0, patternName(pattern)
+                                            << ": MSE flag / plain " << ratio << ", lower bound " << low << " > 1");
     }
 }

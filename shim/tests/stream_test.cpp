@@ -314,8 +314,8 @@ BOOST_AUTO_TEST_CASE(blue_noise_streams_without_a_layout_keep_their_sets) {
                     }
                     most = std::max(most, cells.size());
                 }
-                BOOST_CHECK_MESSAGE(most == 64, patternName(pattern) << " block at " << first << " pixel " << px
-                                                                     << ": " << most << " of 64 strata");
+                BOOST_CHECK_MESSAGE(most == 64, patternName(pattern) << " block at " << first << " pixel " << px << ": "
+                                                                     << most << " of 64 strata");
             }
     }
 }
