@@ -5,8 +5,9 @@
 //                      [--shifts S (1000)]
 //
 // Writes DIR/table.md (rho, MSE slopes on disk / step / Gaussian with 95% bootstrap intervals, cost per value),
-// DIR/blue_noise.md + spectrum_blue.csv + blue_noise.{png,svg} (radial power spectrum of the per-pixel error,
-// gnuplot), DIR/poisson_vs_stratified.md (MSE ratios per N and integrand with 95% intervals, 2D and 3D) and
+// DIR/blue_noise.md + spectrum_blue.csv + blue_noise.{png,svg} (radial power spectrum of the per-pixel error of
+// the Gaussian, gnuplot; flag / plain MSE ratios on the Gaussian, the step, a ramp and an off-centre Gaussian),
+// DIR/poisson_vs_stratified.md (MSE ratios per N and integrand with 95% intervals, 2D and 3D) and
 // DIR/poisson_spread.md (MSE of each cached poisson base set, max / min per N, with the base sets' rho and
 // generation time). --poisson-only writes only the last two (the poisson / stratified comparison); --ns sets
 // its N. --blue-only writes only the blue-noise files.
