@@ -1,14 +1,16 @@
 // pattern_table.cpp — the one table of shim/POINTSETS.md for every pattern, the blue-noise spectrum and the
 // poisson / stratified MSE ratios, measured through the C API in one run.
 //
-//   shim_pattern_table -o DIR [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...] [--shifts S (1000)]
+//   shim_pattern_table -o DIR [--sets R (500)] [--quick] [--poisson-only] [--blue-only] [--ns N,N,...]
+//                      [--shifts S (1000)]
 //
 // Writes DIR/table.md (rho, MSE slopes on disk / step / Gaussian with 95% bootstrap intervals, cost per value),
-// DIR/blue_noise.md + spectrum_blue.csv + blue_noise.{png,svg} (radial power spectrum of the per-pixel error,
-// gnuplot), DIR/poisson_vs_stratified.md (MSE ratios per N and integrand with 95% intervals, 2D and 3D) and
+// DIR/blue_noise.md + spectrum_blue.csv + blue_noise.{png,svg} (radial power spectrum of the per-pixel error of
+// the Gaussian, gnuplot; flag / plain MSE ratios on the Gaussian, the step, a ramp and an off-centre Gaussian),
+// DIR/poisson_vs_stratified.md (MSE ratios per N and integrand with 95% intervals, 2D and 3D) and
 // DIR/poisson_spread.md (MSE of each cached poisson base set, max / min per N, with the base sets' rho and
 // generation time). --poisson-only writes only the last two (the poisson / stratified comparison); --ns sets
-// its N.
+// its N. --blue-only writes only the blue-noise files.
 #include "pointsets/pointsets.h"
 #include "poisson_cache.h"
 #include "hash.h"
@@ -237,7 +239,7 @@ std::vector<double> periodogram(const std::vector<double>& image, size_t size) {
 int main(int argc, char** argv) {
     fs::path outDir = "pattern_table";
     int sets = 500;
-    bool quick = false, poissonOnly = false;
+    bool quick = false, poissonOnly = false, blueOnly = false;
     int shiftsOption = 0; // toroidal shifts per base set in poisson_spread.md
     std::vector<uint32_t> ratioNs;
     for (int i = 1; i < argc; ++i) {
@@ -250,6 +252,8 @@ int main(int argc, char** argv) {
             quick = true;
         else if (a == "--poisson-only")
             poissonOnly = true;
+        else if (a == "--blue-only")
+            blueOnly = true;
         else if (a == "--shifts" && i + 1 < argc)
             shiftsOption = std::atoi(argv[++i]);
         else if (a == "--ns" && i + 1 < argc) {
@@ -264,7 +268,8 @@ int main(int argc, char** argv) {
             }
         } else {
             std::cout << "usage: " << argv[0]
-                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--ns N,N,...] [--shifts S (1000)]\n";
+                      << " [-o DIR] [--sets R (500)] [--quick] [--poisson-only] [--blue-only] [--ns N,N,...] [--shifts "
+                         "S (1000)]\n";
             return a == "-h" || a == "--help" ? 0 : 2;
         }
     }
@@ -273,12 +278,12 @@ int main(int argc, char** argv) {
     const std::vector<uint32_t> slopeNs = {16, 64, 256, 1024, 4096};
 
     // ---- the table: rho, slopes, cost ----------------------------------------------------------------------
-    if (!poissonOnly) {
+    const auto g2 = integrands(2);
+    if (!poissonOnly && !blueOnly) {
         std::ofstream table(outDir / "table.md");
         table << "| pattern | rho (2D, N = 1024, mean) | disk slope [95%] | step slope [95%] | Gaussian slope [95%] | "
                  "Gaussian slope N = 256..4096 [95%] | cost per value (ns, 2D N = 4096) "
                  "|\n|---|---|---|---|---|---|---|\n";
-        const auto g2 = integrands(2);
         for (const char* pattern : kAllPatterns) {
             std::vector<std::vector<std::vector<double>>> sq(g2.size(),
                                                              std::vector<std::vector<double>>(slopeNs.size()));
@@ -324,97 +329,119 @@ int main(int argc, char** argv) {
             std::cerr << pattern << " done\n";
         }
         table.close();
+    }
 
-        // ---- blue noise: spectrum of the per-pixel error of a fixed integrand --------------------------------------
-        {
-            constexpr size_t kSize = 128;
-            const int images = quick ? 6 : 24;
-            const Integrand& g = g2[2]; // the Gaussian: the smooth integrand the per-pixel error is measured on
-            std::ofstream md(outDir / "blue_noise.md");
-            std::ofstream csv(outDir / "spectrum_blue.csv");
-            csv << "pattern,flag,N,radius,power_over_mse\n";
-            md << "| pattern | N | flag | per-pixel MSE | MSE ratio flag/plain [95%] | low-quarter energy vs white "
-                  "noise "
-                  "(white / measured) |\n|---|---|---|---|---|---|\n";
-            const uint32_t blueNs[] = {16, 256};
-            for (const char* pattern : {"independent", "stratified", "poisson", "sobol", "pmj02"})
-                for (uint32_t n : blueNs) {
-                    std::vector<double> plainSq;
-                    for (uint32_t flag : {0u, 1u}) {
-                        // Several images with their own seeds: pixels of one image share tiles (one Owen scrambling
-                        // or one base set per tile), so the MSE's uncertainty is over images, not pixels.
-                        std::vector<double> imageMse, power(kSize * kSize, 0.0);
-                        for (int image = 0; image < images; ++image) {
-                            Sampler s(pattern, n, 2, 0xb1e0 + n + 1000 * uint64_t(image), flag);
-                            std::vector<double> error(kSize * kSize);
-                            std::vector<float> points;
-                            double sum = 0;
-                            for (size_t y = 0; y < kSize; ++y)
-                                for (size_t x = 0; x < kSize; ++x) {
-                                    s.fill(uint32_t(x), uint32_t(y), points);
-                                    const double e = estimate(g, points, 2) - g.exact;
-                                    error[y * kSize + x] = e;
-                                    sum += e * e;
+    // ---- blue noise: spectrum of the per-pixel error of a fixed integrand ------------------------------------------
+    if (!poissonOnly) {
+        constexpr size_t kSize = 128;
+        const int images = quick ? 6 : 24;
+        // The spectrum is measured on the Gaussian; the MSE ratios also on integrands a toroidal shift makes worse:
+        // the step (an edge), a ramp and the Gaussian off centre (smooth, not periodic: the shift adds a seam).
+        const double sigma = 0.15, root2 = std::sqrt(2.0), pi = 3.14159265358979323846;
+        const double cx = 0.3, cy = 0.6;
+        auto mass = [&](double c) {
+            return sigma * std::sqrt(2 * pi) / 2 *
+                   (std::erf((1 - c) / (sigma * root2)) + std::erf(c / (sigma * root2)));
+        };
+        const std::vector<Integrand> gs = {g2[2],
+                                           g2[1],
+                                           {"ramp", [](const float* p) { return double(p[0]) + double(p[1]); }, 1.0},
+                                           {"gaussian off centre",
+                                            [=](const float* p) {
+                                                const double dx = p[0] - cx, dy = p[1] - cy;
+                                                return std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
+                                            },
+                                            mass(cx) * mass(cy)}};
+        std::ofstream md(outDir / "blue_noise.md");
+        std::ofstream csv(outDir / "spectrum_blue.csv");
+        csv << "pattern,flag,N,radius,power_over_mse\n";
+        md << "| pattern | N | flag | per-pixel MSE | MSE ratio flag/plain [95%] | low-quarter energy vs white noise "
+              "(white / measured) | MSE ratio step [95%] | MSE ratio ramp x + y [95%] | MSE ratio Gaussian at (0.3, "
+              "0.6) [95%] |\n|---|---|---|---|---|---|---|---|---|\n";
+        const uint32_t blueNs[] = {16, 256};
+        for (const char* pattern : {"independent", "stratified", "poisson", "sobol", "pmj02"})
+            for (uint32_t n : blueNs) {
+                std::vector<std::vector<double>> plainSq;
+                for (uint32_t flag : {0u, 1u}) {
+                    // Several images with their own seeds: pixels of one image share tiles (one Owen scrambling
+                    // or one base set per tile), so the MSE's uncertainty is over images, not pixels.
+                    std::vector<std::vector<double>> imageMse(gs.size());
+                    std::vector<double> power(kSize * kSize, 0.0);
+                    for (int image = 0; image < images; ++image) {
+                        Sampler s(pattern, n, 2, 0xb1e0 + n + 1000 * uint64_t(image), flag);
+                        std::vector<double> error(kSize * kSize), sum(gs.size(), 0.0);
+                        std::vector<float> points;
+                        for (size_t y = 0; y < kSize; ++y)
+                            for (size_t x = 0; x < kSize; ++x) {
+                                s.fill(uint32_t(x), uint32_t(y), points);
+                                for (size_t gi = 0; gi < gs.size(); ++gi) {
+                                    const double e = estimate(gs[gi], points, 2) - gs[gi].exact;
+                                    if (gi == 0) error[y * kSize + x] = e;
+                                    sum[gi] += e * e;
                                 }
-                            imageMse.push_back(sum / double(kSize * kSize));
-                            const auto p = periodogram(error, kSize);
-                            for (size_t i = 0; i < p.size(); ++i) power[i] += p[i] / images;
-                        }
-                        const double mse = mean(imageMse);
-                        // Lowest quarter of frequencies: |f| < Nyquist / 4 = 1/8 cycle per pixel, DC excluded.
-                        double band = 0;
-                        int bins = 0;
-                        std::vector<double> radial(kSize / 2 + 1, 0.0);
-                        std::vector<int> radialCount(kSize / 2 + 1, 0);
-                        for (size_t ky = 0; ky < kSize; ++ky)
-                            for (size_t kx = 0; kx < kSize; ++kx) {
-                                const double fx = double(kx <= kSize / 2 ? kx : kSize - kx) / kSize;
-                                const double fy = double(ky <= kSize / 2 ? ky : kSize - ky) / kSize;
-                                const double f = std::sqrt(fx * fx + fy * fy);
-                                if (kx == 0 && ky == 0) continue;
-                                if (f < 0.125) band += power[ky * kSize + kx], ++bins;
-                                const size_t ring = size_t(std::lround(f * kSize));
-                                if (ring < radial.size()) radial[ring] += power[ky * kSize + kx], ++radialCount[ring];
                             }
-                        const double ratio = (bins * mse) / band;
-                        for (size_t r = 1; r < radial.size(); ++r)
-                            if (radialCount[r])
-                                csv << pattern << "," << flag << "," << n << "," << double(r) / kSize << ","
-                                    << radial[r] / radialCount[r] / mse << "\n";
-                        md << "| " << pattern << " | " << n << " | " << (flag ? "blue noise" : "-") << " | "
-                           << std::scientific << std::setprecision(3) << mse << std::fixed << " | ";
-                        if (flag) {
-                            const Ratio r = mseRatio(imageMse, plainSq);
-                            md << fmt(r.ratio, 3) << " [" << fmt(r.low, 3) << ", " << fmt(r.high, 3) << "]";
-                        } else {
-                            plainSq = imageMse;
-                            md << "-";
-                        }
-                        md << " | " << fmt(ratio, 1) << " |\n";
+                        for (size_t gi = 0; gi < gs.size(); ++gi)
+                            imageMse[gi].push_back(sum[gi] / double(kSize * kSize));
+                        const auto p = periodogram(error, kSize);
+                        for (size_t i = 0; i < p.size(); ++i) power[i] += p[i] / images;
                     }
+                    const double mse = mean(imageMse[0]);
+                    // Lowest quarter of frequencies: |f| < Nyquist / 4 = 1/8 cycle per pixel, DC excluded.
+                    double band = 0;
+                    int bins = 0;
+                    std::vector<double> radial(kSize / 2 + 1, 0.0);
+                    std::vector<int> radialCount(kSize / 2 + 1, 0);
+                    for (size_t ky = 0; ky < kSize; ++ky)
+                        for (size_t kx = 0; kx < kSize; ++kx) {
+                            const double fx = double(kx <= kSize / 2 ? kx : kSize - kx) / kSize;
+                            const double fy = double(ky <= kSize / 2 ? ky : kSize - ky) / kSize;
+                            const double f = std::sqrt(fx * fx + fy * fy);
+                            if (kx == 0 && ky == 0) continue;
+                            if (f < 0.125) band += power[ky * kSize + kx], ++bins;
+                            const size_t ring = size_t(std::lround(f * kSize));
+                            if (ring < radial.size()) radial[ring] += power[ky * kSize + kx], ++radialCount[ring];
+                        }
+                    const double ratio = (bins * mse) / band;
+                    for (size_t r = 1; r < radial.size(); ++r)
+                        if (radialCount[r])
+                            csv << pattern << "," << flag << "," << n << "," << double(r) / kSize << ","
+                                << radial[r] / radialCount[r] / mse << "\n";
+                    const auto ratioCell = [&](size_t gi) {
+                        if (!flag) return std::string("-");
+                        const Ratio r = mseRatio(imageMse[gi], plainSq[gi]);
+                        return fmt(r.ratio, 3) + " [" + fmt(r.low, 3) + ", " + fmt(r.high, 3) + "]";
+                    };
+                    md << "| " << pattern << " | " << n << " | " << (flag ? "blue noise" : "-") << " | "
+                       << std::scientific << std::setprecision(3) << mse << std::fixed << " | " << ratioCell(0) << " | "
+                       << fmt(ratio, 1);
+                    for (size_t gi = 1; gi < gs.size(); ++gi) md << " | " << ratioCell(gi);
+                    md << " |\n";
+                    if (!flag) plainSq = imageMse;
                 }
-            md.close();
-            std::ofstream gp(outDir / "blue_noise.gp");
-            gp << "set datafile separator ','\nset logscale y\nset xlabel 'frequency (cycles per pixel)'\n"
-                  "set ylabel 'radial power / per-pixel MSE (white noise = 1)'\nset key top left\n"
-                  "set title 'Per-pixel error spectrum, Gaussian integrand, 128x128 pixels'\n"
-                  "set arrow from 0.125, graph 0 to 0.125, graph 1 nohead dt 2\n"
-                  "sel(p,f,n)=(strcol(1) eq p && $2 == f && $3 == n) ? $5 : 1/0\n"
-                  "plot for [p in 'sobol stratified independent pmj02'] for [f in '0 1'] '"
-               << (outDir / "spectrum_blue.csv").string()
-               << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : "
-                  "'plain')\n";
-            gp.close();
-            for (const char* term : {"pngcairo size 900,600", "svg size 900,600"}) {
-                const std::string ext = std::string(term).substr(0, 3) == "png" ? "png" : "svg";
-                const std::string cmd = "gnuplot -e \"set terminal " + std::string(term) + "; set output '" +
-                                        (outDir / ("blue_noise." + ext)).string() + "'\" '" +
-                                        (outDir / "blue_noise.gp").string() + "' 2>&1";
-                if (std::system(cmd.c_str()) != 0) std::cerr << "gnuplot failed: " << cmd << "\n";
+                std::cerr << pattern << " N=" << n << " blue noise done\n";
             }
-            std::cerr << "blue noise done\n";
+        md.close();
+        std::ofstream gp(outDir / "blue_noise.gp");
+        gp << "set datafile separator ','\nset logscale y\nset xlabel 'frequency (cycles per pixel)'\n"
+              "set ylabel 'radial power / per-pixel MSE (white noise = 1)'\nset key top left\n"
+              "set title 'Per-pixel error spectrum, Gaussian integrand, 128x128 pixels'\n"
+              "set arrow from 0.125, graph 0 to 0.125, graph 1 nohead dt 2\n"
+              "sel(p,f,n)=(strcol(1) eq p && $2 == f && $3 == n) ? $5 : 1/0\n"
+              "plot for [p in 'sobol stratified independent pmj02'] for [f in '0 1'] '"
+           << (outDir / "spectrum_blue.csv").string()
+           << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : "
+              "'plain')\n";
+        gp.close();
+        for (const char* term : {"pngcairo size 900,600", "svg size 900,600"}) {
+            const std::string ext = std::string(term).substr(0, 3) == "png" ? "png" : "svg";
+            const std::string cmd = "gnuplot -e \"set terminal " + std::string(term) + "; set output '" +
+                                    (outDir / ("blue_noise." + ext)).string() + "'\" '" +
+                                    (outDir / "blue_noise.gp").string() + "' 2>&1";
+            if (std::system(cmd.c_str()) != 0) std::cerr << "gnuplot failed: " << cmd << "\n";
         }
-    } // !poissonOnly
+        std::cerr << "blue noise done\n";
+    }
+    if (blueOnly) return 0;
 
     // ---- poisson vs stratified, 2D and 3D, every N ----------------------------------------------------------
     {

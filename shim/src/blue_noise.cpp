@@ -1,164 +1,105 @@
-// blue_noise.cpp — the void-and-cluster mask, the Z-order Sobol' assignment and the toroidal shift.
+// blue_noise.cpp — the lattice map from pixels to sub-cells and shifts.
 #include "blue_noise.h"
 
-#include <algorithm>
-#include <cmath>
-#include <vector>
+#include "hash.h"
+
+#include <utility>
 
 namespace stipple {
 
 namespace {
 
-constexpr uint32_t kSize = 1u << kBlueNoiseMaskLog2, kCells = kSize * kSize;
-
-// Ulichney's void-and-cluster with a toroidal Gaussian filter (sigma 1.5). Energy[i] is the filtered density
-// of the ones at i; the tightest cluster is the one with the most energy, the largest void the zero with least.
-class VoidAndCluster {
-public:
-    VoidAndCluster() : kernel_(kCells), energy_(kCells, 0.0), ones_(kCells, false) {
-        constexpr double kSigma = 1.5;
-        for (uint32_t y = 0; y < kSize; ++y)
-            for (uint32_t x = 0; x < kSize; ++x) {
-                const double dx = std::min(x, kSize - x), dy = std::min(y, kSize - y);
-                kernel_[y * kSize + x] = std::exp(-(dx * dx + dy * dy) / (2 * kSigma * kSigma));
+// Rows: the coefficients of the pixel's x and y per axis, mod Q, from shim/bench/lattice_search.py (a seeded random
+// search): per arity and use, the A whose plane waves, cut by the 64-pixel tiles, leak the least error energy into
+// |f| < 1/8 cycle per pixel (predicted white / low-band ratios in parentheses). Strata: a second-order Taylor
+// polynomial inside a stratum, folded by the tent (2D 1006, 3D 460, 1D 1643). Square (independent: the stratum is
+// the unit square): the worst of Gaussian bumps of width 0.15 at 5 positions per axis, folded by the tent (2D 20,
+// 3D 2, 1D 404). Shifts: weights 1/|k|^4 (3D 6, 1D 1643); in 2D this model ranks candidates only roughly (the
+// base sets damp their own low modes), so of its 12 best the one with the highest least measured ratio over
+// poisson, sobol and pmj02 at N = 16 on blue_noise_test's seeds was kept (80-111x; model 31). Every 2D and 1D map
+// is a bijection of the tile onto the 64 x 64 (4096) values (2D: det A odd; 1D: checked below), so a tile's
+// pixels take every sub-cell of a stratum, or every shift of the grid, once.
+struct LatticeMaps {
+    int32_t a1[2];
+    int32_t a2[2][2];
+    int32_t a3[3][2];
+};
+constexpr LatticeMaps kMaps[3] = {
+    {{3136, 2339}, {{47, 39}, {25, 46}}, {{44, 52}, {55, 22}, {36, 24}}}, // LatticeUse::Strata
+    {{1627, 576}, {{40, 55}, {9, 17}}, {{61, 21}, {18, 61}, {51, 35}}},   // LatticeUse::Square
+    {{3136, 2339}, {{37, 18}, {46, 37}}, {{9, 56}, {27, 24}, {39, 0}}},   // LatticeUse::Shift
+};
+constexpr bool oddDeterminant(const int32_t (&a)[2][2]) { return (a[0][0] * a[1][1] - a[0][1] * a[1][0]) % 2 != 0; }
+static_assert(oddDeterminant(kMaps[0].a2) && oddDeterminant(kMaps[1].a2) && oddDeterminant(kMaps[2].a2));
+// 1D: a x + b y mod 4096 takes every value once over the tile, for every swap and reflection of the pixel axes.
+constexpr bool bijective1(const int32_t (&a)[2]) {
+    for (uint32_t variant = 0; variant < 8; ++variant) {
+        bool seen[4096] = {};
+        for (int32_t y = 0; y < 64; ++y)
+            for (int32_t x = 0; x < 64; ++x) {
+                const int32_t u = variant & 2 ? 63 - x : x, v = variant & 4 ? 63 - y : y;
+                const uint32_t c = uint32_t(variant & 1 ? a[0] * v + a[1] * u : a[0] * u + a[1] * v) & 4095u;
+                if (seen[c]) return false;
+                seen[c] = true;
             }
     }
-
-    void set(uint32_t i, bool one) {
-        ones_[i] = one;
-        const double sign = one ? 1.0 : -1.0;
-        const uint32_t ix = i % kSize, iy = i / kSize;
-        for (uint32_t y = 0; y < kSize; ++y)
-            for (uint32_t x = 0; x < kSize; ++x)
-                energy_[y * kSize + x] += sign * kernel_[((y - iy) & (kSize - 1)) * kSize + ((x - ix) & (kSize - 1))];
-    }
-    bool one(uint32_t i) const { return ones_[i]; }
-    uint32_t tightestCluster() const { return extreme(true); }
-    uint32_t largestVoid() const { return extreme(false); }
-
-private:
-    uint32_t extreme(bool amongOnes) const {
-        uint32_t best = kCells;
-        for (uint32_t i = 0; i < kCells; ++i)
-            if (ones_[i] == amongOnes &&
-                (best == kCells || (amongOnes ? energy_[i] > energy_[best] : energy_[i] < energy_[best])))
-                best = i;
-        return best;
-    }
-    std::vector<double> kernel_, energy_;
-    std::vector<bool> ones_;
-};
-
-std::vector<float> makeMask() {
-    // Initial pattern: 10% ones at hashed positions, relaxed until the tightest cluster is the largest void.
-    constexpr uint32_t kInitialOnes = kCells / 10;
-    constexpr uint64_t kMaskKey = 0xb1e5ee0dc0ffee08ull;
-    VoidAndCluster prototype;
-    for (uint32_t placed = 0, counter = 0; placed < kInitialOnes; ++counter) {
-        const uint32_t i = static_cast<uint32_t>(hashAt(kMaskKey, counter) % kCells);
-        if (!prototype.one(i)) prototype.set(i, true), ++placed;
-    }
-    for (uint32_t pass = 0; pass < kCells; ++pass) {
-        const uint32_t cluster = prototype.tightestCluster();
-        prototype.set(cluster, false);
-        const uint32_t hole = prototype.largestVoid();
-        prototype.set(hole, true);
-        if (hole == cluster) break;
-    }
-    std::vector<uint32_t> rank(kCells);
-    // Phase 1: remove the tightest clusters of the prototype, ranks kInitialOnes - 1 down to 0.
-    VoidAndCluster pattern = prototype;
-    for (uint32_t r = kInitialOnes; r-- > 0;) {
-        const uint32_t cluster = pattern.tightestCluster();
-        pattern.set(cluster, false);
-        rank[cluster] = r;
-    }
-    // Phases 2 and 3: fill the largest voids of the prototype, ranks kInitialOnes .. kCells - 1 (past half, the
-    // tightest cluster of zeros is the zero with the least energy of ones: the same rule).
-    for (uint32_t r = kInitialOnes; r < kCells; ++r) {
-        const uint32_t hole = prototype.largestVoid();
-        prototype.set(hole, true);
-        rank[hole] = r;
-    }
-    std::vector<float> mask(kCells);
-    for (uint32_t i = 0; i < kCells; ++i) mask[i] = (float(rank[i]) + 0.5f) / float(kCells);
-    return mask;
+    return true;
 }
+static_assert(bijective1(kMaps[0].a1) && bijective1(kMaps[1].a1) && bijective1(kMaps[2].a1));
 
-// The 24 permutations of {0, 1, 2, 3}.
-constexpr uint8_t kPermutations4[24][4] = {
-    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 3, 2, 1}, {1, 0, 2, 3}, {1, 0, 3, 2},
-    {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 0, 2}, {1, 3, 2, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 1, 0, 3}, {2, 1, 3, 0},
-    {2, 3, 0, 1}, {2, 3, 1, 0}, {3, 0, 1, 2}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 1, 2, 0}, {3, 2, 0, 1}, {3, 2, 1, 0}};
+constexpr uint64_t kSymmetryIndex = 0x5e77u, kOffsetIndex = 0x0ff5u;
 
 } // namespace
 
-const float* blueNoiseMask() {
-    static const std::vector<float> mask = makeMask();
-    return mask.data();
-}
-
-SobolSet zOrderSobolSet(uint64_t dimensionKey, uint64_t pixelKey, uint32_t pixelX, uint32_t pixelY,
-                        uint32_t log2Length) {
-    SobolSet set;
-    // T levels of Morton digits leave room in the 32-bit index for the pixel's 2^m points (T <= 8: 256^2 tiles).
-    const uint32_t levels = std::min<uint32_t>(8, (32 - std::min<uint32_t>(log2Length, 32)) / 2);
-    const uint64_t tileKey = hashCombine(dimensionKey, (uint64_t(pixelY >> levels) << 32) | (pixelX >> levels));
-    const uint64_t h0 = hashAt(tileKey, 0), h1 = hashAt(tileKey, 1);
-    set.scramble[0] = static_cast<uint32_t>(h0 >> 32);
-    set.scramble[1] = static_cast<uint32_t>(h1);
-    set.scramble[2] = static_cast<uint32_t>(h1 >> 32);
-    set.indexSeed = static_cast<uint32_t>(hashAt(pixelKey, 0));
-    uint32_t morton = 0, prefix = 1; // prefix: the digits above, with a leading 1 marking their count
-    for (uint32_t level = levels; level-- > 0;) {
-        const uint32_t digit = ((pixelX >> level) & 1u) | (((pixelY >> level) & 1u) << 1);
-        const uint32_t permutation = static_cast<uint32_t>(hashAt(tileKey, 2 + uint64_t(prefix)) % 24);
-        morton = (morton << 2) | kPermutations4[permutation][digit];
-        prefix = (prefix << 2) | digit;
+LatticePixel::LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use) {
+    const LatticeMaps& maps = kMaps[static_cast<uint32_t>(use)];
+    // A hashed signed permutation of the pixel axes (swap, then reflect each) and of the value axes (a rotation
+    // of the axes, a reflection of each), so tiles and dimensions do not share one grating.
+    const uint64_t h = hashAt(tileKey, kSymmetryIndex);
+    constexpr uint32_t kMask = (1u << kBlueNoiseTileLog2) - 1;
+    int32_t x = int32_t(pixelX & kMask), y = int32_t(pixelY & kMask);
+    if (h & 1) std::swap(x, y);
+    if (h & 2) x = int32_t(kMask) - x;
+    if (h & 4) y = int32_t(kMask) - y;
+    if (arity == 1) {
+        const int32_t v = maps.a1[0] * x + maps.a1[1] * y;
+        c[0] = uint32_t((h & 8) ? -v : v) & 4095u;
+        return;
     }
-    set.blockBase = morton;
-    set.blockStride = levels == 0 ? 1u : 1u << (2 * levels);
-    return set;
-}
-
-uint32_t CrossPixelStrata::subcell(uint64_t stratum) const {
-    // The pixel's finest Morton digit (which pixel of its 2 x 2 quad) picks the coarsest split of the stratum, so
-    // a quad fills the four quarters, a 4 x 4 block the sixteen sixteenths, and so on.
-    const uint64_t key = hashCombine(tileKey, stratum);
-    uint32_t subcell = 0, prefix = 1;
-    for (uint32_t level = 0; level < kCrossPixelLevels; ++level) {
-        const uint32_t digit = ((pixelX >> level) & 1u) | (((pixelY >> level) & 1u) << 1);
-        subcell = (subcell << 2) | kPermutations4[hashAt(key, prefix) % 24][digit];
-        prefix = (prefix << 2) | digit;
+    const uint32_t rotation = uint32_t((h >> 8) % arity);
+    for (uint32_t i = 0; i < arity; ++i) {
+        const int32_t* row = arity == 2 ? maps.a2[(i + rotation) % 2] : maps.a3[(i + rotation) % 3];
+        const int32_t v = row[0] * x + row[1] * y;
+        c[i] = uint32_t((h >> (16 + i)) & 1 ? -v : v) & 63u;
     }
-    return subcell;
 }
 
 void CrossPixelStrata::place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const {
-    constexpr uint32_t T = kCrossPixelLevels;
-    const uint32_t s = subcell(stratum);
+    // tent: the sub-cell order 0, 2, 4, ..., Q-2, Q-1, ..., 3, 1, so neighbouring values of c are neighbouring
+    // sub-cells also across the wrap.
+    const uint64_t offsets = hashAt(hashCombine(tileKey, stratum), kOffsetIndex);
     if (arity == 1) {
-        jitter[0] = (s << (32 - 2 * T)) | (jitter[0] >> (2 * T));
+        constexpr uint32_t Q = 4096;
+        const uint32_t c = (lattice.c[0] + uint32_t(offsets)) & (Q - 1);
+        const uint32_t t = c < Q / 2 ? 2 * c : 2 * (Q - 1 - c) + 1;
+        jitter[0] = (t << 20) | (jitter[0] >> 12);
         return;
     }
-    uint32_t sx = 0, sy = 0;
-    for (uint32_t l = 0; l < T; ++l) {
-        sx |= ((s >> (2 * l)) & 1u) << l;
-        sy |= ((s >> (2 * l + 1)) & 1u) << l;
+    constexpr uint32_t Q = 64;
+    for (uint32_t i = 0; i < arity; ++i) {
+        const uint32_t c = (lattice.c[i] + uint32_t(offsets >> (8 * i))) & (Q - 1);
+        const uint32_t t = c < Q / 2 ? 2 * c : 2 * (Q - 1 - c) + 1;
+        jitter[i] = (t << 26) | (jitter[i] >> 6);
     }
-    jitter[0] = (sx << (32 - T)) | (jitter[0] >> T);
-    jitter[1] = (sy << (32 - T)) | (jitter[1] >> T);
 }
 
 void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, float* shift) {
-    const float* mask = blueNoiseMask();
-    for (uint32_t c = 0; c < arity; ++c) {
-        // Each axis reads the mask at its own hashed toroidal offset, and adds its own hashed offset.
-        const uint64_t h = hashAt(tileKey, 100 + c);
-        const uint32_t x = (pixelX + uint32_t(h)) & (kSize - 1), y = (pixelY + uint32_t(h >> 8)) & (kSize - 1);
-        float v = mask[y * kSize + x] + unitFloat(hashAt(tileKey, 200 + c));
-        v -= float(v >= 1.0f);
-        shift[c] = v;
+    const LatticePixel lattice(tileKey, pixelX, pixelY, arity, LatticeUse::Shift);
+    const uint32_t log2Q = arity == 1 ? 12 : 6;
+    for (uint32_t i = 0; i < arity; ++i) {
+        // c / Q plus a uniform 32-bit offset, wrapped by the 32-bit sum.
+        const uint32_t s = (lattice.c[i] << (32 - log2Q)) + uint32_t(hashAt(tileKey, kOffsetIndex + 1 + i) >> 32);
+        shift[i] = float(s >> 8) * 0x1p-24f;
     }
 }
 

@@ -1,54 +1,61 @@
-// blue_noise.h — screen-space blue noise: neighbouring pixels get sets whose errors are negatively correlated.
+// blue_noise.h — screen-space blue noise: neighbouring pixels get sets whose errors cancel at low frequencies.
 //
-// STIPPLE_SAMPLER_FLAG_BLUE_NOISE. Two mechanisms:
-// - sobol: a Morton (Z-order) assignment of Sobol' blocks to pixels, as in Ahmed & Wonka (2020) and pbrt-v4's
-//   ZSobolSampler. Within a tile of 2^T x 2^T pixels all pixels share one Owen scrambling per dimension, and the
-//   pixel at (x, y) takes block number morton(x, y), with each base-4 Morton digit permuted by a hash of the
-//   digits above it (and of the tile and dimension). Every aligned 2^l x 2^l square of pixels then holds 4^l
-//   consecutive blocks: together a (0, m + 2l, 2)-net, so the sum of their errors is far below that of
-//   independent sets — the error has little energy at low frequencies. Each pixel's own set is still a
-//   scrambled net, so per-pixel quality is unchanged.
-// - stratified and independent: stratification across pixels. In a tile of 2^T x 2^T pixels (T = 6), every
-//   stratum (independent: the unit square, once per point index) is cut into 2^T x 2^T sub-cells (1D: 4^T), and
-//   the pixels of the tile take its sub-cells through the same digit-permuted Morton map as above, with a
-//   permutation hashed per stratum. A pixel's point is still uniform in its stratum and independent of its
-//   other points (each stratum has its own permutation), so every pixel's set has the plain pattern's
-//   distribution; the points of an aligned 2^l x 2^l square of pixels in one stratum are stratified 2^l x 2^l.
-// - poisson, poisson-seed and pmj02: a per-pixel toroidal shift (Cranley-Patterson rotation) read from a 64 x 64
-//   blue-noise mask (Georgiev & Fajardo 2016), over a base set shared by the pixels of a 64 x 64 tile.
-//   The mask is made once, deterministically, by void-and-cluster (Ulichney 1993). A shift uniform over
-//   [0,1)^d per pixel (mask value plus a hashed offset per tile and axis) keeps every sample uniform.
+// STIPPLE_SAMPLER_FLAG_BLUE_NOISE. One mechanism: a lattice map per tile of 64 x 64 pixels and dimension. Pixel
+// p = (x, y) of the tile maps to c(p) = (A p + o) mod Q per axis (A an integer arity x 2 matrix, o an offset).
+// Mode k of any periodic function of c is, across the tile, a plane wave of pixel frequency A^T k / Q; A (one per
+// arity and LatticeUse, blue_noise.cpp; shim/bench/lattice_search.py) is chosen so that the modes which carry a
+// smooth integrand's error land far above the low band. Within a tile the error of a fixed integrand is
+// therefore a sum of high-frequency gratings, like an ordered dither. Per (tile, dimension, stream, block) a
+// hashed signed permutation of the pixel axes and of the value axes and random offsets make neighbouring tiles
+// and different dimensions use different gratings.
+// - stratified and independent: stratification across pixels. Every stratum (independent: the unit square, once
+//   per point index) is cut into 64 x 64 sub-cells (3D: per axis; 1D: 4096); the pixel's point goes to sub-cell
+//   tent(c(p)) with an offset o hashed per stratum, and keeps its own jitter inside it. tent(c) = 2c below Q/2,
+//   2(Q - 1 - c) + 1 above: a bijection of 0..Q-1 that makes a ramp inside the stratum (what a smooth integrand
+//   is there) a continuous periodic function of c, whose modes decay fast (a sawtooth's do not). 2D and 1D maps
+//   are bijections of the tile onto the sub-cells (det A odd; 1D checked), so a tile's pixels stratify every
+//   stratum among themselves. The offset makes the sub-cell uniform and independent across strata: every
+//   pixel's set has exactly the plain pattern's distribution.
+// - poisson, poisson-seed, pmj02 and sobol: a Cranley-Patterson shift per pixel, s(p) = c(p) / Q + o mod 1 with a
+//   continuous offset o per tile (so every sample is uniform), over a base set the tile's pixels share (sobol: one
+//   Owen-scrambled sequence per tile, whose blocks past N continue under the same shift). The shift makes a
+//   non-periodic integrand periodic with a seam: on a smooth integrand that is not periodic a shifted net has
+//   the error of an integrand with an edge (poisson's plain sets are shifted already).
 #pragma once
 
 #include "patterns.h"
 
+#include <cstddef>
 #include <cstdint>
 
 namespace stipple {
 
-constexpr uint32_t kBlueNoiseMaskLog2 = 6; // 64 x 64
+constexpr uint32_t kBlueNoiseTileLog2 = 6; // tiles of 64 x 64 pixels
 
-// The void-and-cluster mask: kBlueNoiseMaskSize^2 values (i + 0.5) / size^2, each rank once, row-major.
-const float* blueNoiseMask();
+// What a lattice map serves; each has its own A (blue_noise.cpp).
+enum class LatticeUse : uint32_t {
+    Strata, // stratified: sub-cells of small strata
+    Square, // independent: sub-cells of the unit square
+    Shift   // the toroidal shift of the base-set variant
+};
 
-constexpr uint32_t kCrossPixelLevels = 6; // tiles of 64 x 64 pixels
+// The lattice map of one (tile, dimension, stream, block) at one pixel: c(p) without the offset, per axis.
+struct LatticePixel {
+    uint32_t c[3] = {0, 0, 0}; // in [0, Q): Q = 64, or 4096 for arity 1
+    LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use);
+};
 
 // Where pixel (x, y) puts its point inside a stratum shared by the pixels of its tile.
 struct CrossPixelStrata {
-    uint64_t tileKey; // hashed from (seed, pattern, tile, dimension)
-    uint32_t pixelX, pixelY;
-    // The pixel's sub-cell of the stratum with this id: a Morton index in [0, 4^T), digits permuted per stratum.
-    uint32_t subcell(uint64_t stratum) const;
-    // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell.
+    uint64_t tileKey; // hashed from (seed, pattern, tile, dimension[, stream arity][, block])
+    LatticePixel lattice;
+    CrossPixelStrata(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use)
+        : tileKey(tileKey), lattice(tileKey, pixelX, pixelY, arity, use) {}
+    // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell of the stratum.
     void place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const;
 };
 
-// The sobol set of pixel (x, y) for a dimension: dimensionKey is hashed from (seed, dimension) (the tile is
-// folded in here), pixelKey from (seed, pixel, dimension).
-SobolSet zOrderSobolSet(uint64_t dimensionKey, uint64_t pixelKey, uint32_t pixelX, uint32_t pixelY,
-                        uint32_t log2Length);
-
-// The per-pixel toroidal shift of the mask-based variant, one value per axis in [0, 1).
+// The per-pixel toroidal shift of the base-set variant, one value per axis in [0, 1).
 void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, float* shift);
 
 // x + shift wrapped into [0, 1) for count points of `arity` floats.

@@ -3,7 +3,7 @@
 // The set of one (pixel, dimension) is M points of the first `arity` Sobol' dimensions (M = k*N for a declared
 // dimension, N for a stream). Let L = 2^m be the smallest power of two >= M. Sample index i lies in block
 // b = i / N (the sampler passes SobolSet::atBlock(b)); point r of that block has the Sobol' index
-//     (block(b) << m) | (nestedUniformScramble(r, indexSeed) mod L),   block(b) = blockBase + b * blockStride,
+//     (block(b) << m) | (nestedUniformScramble(r, indexSeed) mod L),   block(b) = blockBase + b,
 // where the index shuffle (an Owen scramble of r's binary digits) maps every prefix [0, 2^j) of r onto an
 // aligned run of 2^j Sobol' indices, i.e. a (0,j,2)-net in 2D. Each coordinate is then Owen-scrambled with its
 // own seed. indexSeed and the scramble seeds are hashed from the set key, so the dimensions of one pixel are

@@ -39,17 +39,16 @@ void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_
 void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 // sobol: the randomisation of one set (pattern_sobol.cpp). perPixel is the plain pattern; the blue-noise
-// variant (blue_noise.h) shares the Owen scrambling across a tile of pixels and gives each pixel its own block.
+// variant (blue_noise.h) takes one set per tile of pixels and shifts it per pixel.
 struct SobolSet {
     uint32_t indexSeed = 0;
     uint32_t scramble[3] = {0, 0, 0};
-    uint32_t blockBase = 0;   // Sobol' block of the set's first M points
-    uint32_t blockStride = 1; // blocks between the set's block b and b + 1 (points past the set)
+    uint32_t blockBase = 0; // Sobol' block of the set's first M points
     static SobolSet perPixel(uint64_t key);
-    // Block b of the set (sample indices [b*N, (b+1)*N)): the set's Sobol' block blockBase + b * blockStride.
+    // Block b of the set (sample indices [b*N, (b+1)*N)): the set's Sobol' block blockBase + b.
     SobolSet atBlock(uint32_t block) const {
         SobolSet s = *this;
-        s.blockBase += block * blockStride;
+        s.blockBase += block;
         return s;
     }
 };

@@ -109,35 +109,35 @@ void Sampler::point(const SetRef& set, const Dimension& dim, uint32_t p, float* 
 // and the per-pixel part from the plain set key, so blocks and streams are blue noise on their own and every
 // sample stays uniform.
 void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const {
+    const uint64_t tileKey =
+        streamWord(setKeyFrom(tileSeedKey_, set.pixelX >> kBlueNoiseTileLog2, set.pixelY >> kBlueNoiseTileLog2, set.d),
+                   set.streamArity);
     switch (pattern_) {
     case STIPPLE_PATTERN_INDEPENDENT:
     case STIPPLE_PATTERN_STRATIFIED: { // stratification across the pixels of a tile
-        const uint64_t tileKey = streamWord(
-            setKeyFrom(tileSeedKey_, set.pixelX >> kCrossPixelLevels, set.pixelY >> kCrossPixelLevels, set.d),
-            set.streamArity);
-        const CrossPixelStrata strata{blockKey(tileKey, set.block), set.pixelX, set.pixelY};
+        const CrossPixelStrata strata(blockKey(tileKey, set.block), set.pixelX, set.pixelY, dim.arity,
+                                      pattern_ == STIPPLE_PATTERN_INDEPENDENT ? LatticeUse::Square
+                                                                              : LatticeUse::Strata);
         const uint64_t key = blockKey(pixelKey(set), set.block);
         if (pattern_ == STIPPLE_PATTERN_INDEPENDENT) return fillIndependent(key, dim, first, count, out, &strata);
         return fillStratified(key, dim, first, count, out, &strata);
     }
-    case STIPPLE_PATTERN_SOBOL: { // Z-order blocks; block b of the set continues the pixel's blocks
-        const uint64_t dimensionKey = streamWord(hashCombine(tileSeedKey_, set.d), set.streamArity);
-        const SobolSet sobol = zOrderSobolSet(dimensionKey, pixelKey(set), set.pixelX, set.pixelY, dim.log2Length);
-        return fillSobol(sobol.atBlock(set.block), dim, first, count, out);
-    }
-    default: { // poisson, poisson-seed, pmj02: a tile-shared set shifted per pixel by the mask
-        const uint64_t tileKey = blockKey(streamWord(setKeyFrom(tileSeedKey_, set.pixelX >> kBlueNoiseMaskLog2,
-                                                                set.pixelY >> kBlueNoiseMaskLog2, set.d),
-                                                     set.streamArity),
-                                          set.block);
-        if (pattern_ == STIPPLE_PATTERN_POISSON)
-            fillPoisson(tileKey, dim, first, count, out);
-        else if (pattern_ == STIPPLE_PATTERN_PMJ02)
-            fillPmj02(tileKey, dim, first, count, out);
-        else
-            fillPoissonSeed(tileKey, dim, first, count, out);
+    case STIPPLE_PATTERN_SOBOL: { // one sequence per tile, one shift per pixel for all its blocks
+        fillSobol(SobolSet::perPixel(tileKey).atBlock(set.block), dim, first, count, out);
         float shift[3];
         blueNoiseShift(tileKey, set.pixelX, set.pixelY, dim.arity, shift);
+        return applyToroidalShift(shift, dim.arity, count, out);
+    }
+    default: { // poisson, poisson-seed, pmj02: a tile-shared set per block, shifted per pixel
+        const uint64_t key = blockKey(tileKey, set.block);
+        if (pattern_ == STIPPLE_PATTERN_POISSON)
+            fillPoisson(key, dim, first, count, out);
+        else if (pattern_ == STIPPLE_PATTERN_PMJ02)
+            fillPmj02(key, dim, first, count, out);
+        else
+            fillPoissonSeed(key, dim, first, count, out);
+        float shift[3];
+        blueNoiseShift(key, set.pixelX, set.pixelY, dim.arity, shift);
         return applyToroidalShift(shift, dim.arity, count, out);
     }
     }

@@ -88,10 +88,11 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_COUNT 6u
 
 /* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
-/* Screen-space blue noise: neighbouring pixels' sets are decorrelated so that the per-pixel error is spread
- * as blue noise over the image (sobol: Z-order blocks of one sequence; other patterns: toroidal shifts from a
- * blue-noise mask; stratified and independent: strata shared across a tile of pixels). Works for declared
- * layouts and streams, in every block. Every sample stays uniformly distributed. Unknown bits are rejected. */
+/* Screen-space blue noise: neighbouring pixels' sets are built together so that the per-pixel error is spread
+ * as blue noise over the image (a lattice map per 64 x 64 tile of pixels; stratified and independent: strata
+ * shared across the tile's pixels; other patterns: per-pixel toroidal shifts of a set shared by the tile). Works
+ * for declared layouts and streams, in every block. Every sample stays uniformly distributed. Unknown bits are
+ * rejected. */
 #define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
 
 /* ---- limits ----------------------------------------------------------------------------------------- */

@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""lattice_search.py — the lattice maps of the blue-noise flag (src/blue_noise.cpp), found by a seeded random search.
+
+A pixel p = (x, y) of a 64 x 64 tile maps to c(p) = (A p + o) mod Q per axis (Q = 64; 1D: 4096). Mode k of a
+periodic function of c becomes, across the tile, a plane wave of pixel frequency A^T k / Q. Tiles have independent
+offsets, so each wave is cut by the 64-pixel tile window and leaks into nearby frequencies (most along the pixel
+axes: a wave whose x frequency is low leaks into the low band through its y sidelobes). The criterion, for a
+candidate A: the expected share of the error energy that lands in the measured low band (|f| < 1/8 cycle per
+pixel of a 128 x 128 image of independent 64 x 64 tiles), one A per arity for each of three error models:
+  - strata (stratified): inside a small stratum a smooth integrand is its second-order Taylor polynomial
+    u + v + uv + u^2 + v^2 over the sub-cell coordinates u, v, each folded by the tent; the weights are its DFT
+    powers (the ramp gives odd modes, the curvature even ones).
+  - square (independent: the stratum is the unit square): Gaussian bumps of width 0.15 (the pattern table's) at 5
+    positions per axis, folded by the tent; the score is the worst bump's (where a bump sits decides its modes).
+  - shifts (poisson, pmj02, sobol): the error of a shift has the integrand's Fourier modes times the base set's;
+    weights 1 / |k|^4.
+Lower is better; white noise has 0.048. For 2D shifts the model ranks candidates only roughly (nets and Poisson sets
+damp their own low modes); the script lists its 12 best, and blue_noise.cpp keeps the one whose least measured
+ratio over poisson, sobol and pmj02 was highest (each substituted into blue_noise.cpp, shim_blue_noise_test at
+N = 16). 2D maps: det A odd (a bijection of the tile onto the 64 x 64 values). 3D: a 3 x 2 map (no bijection).
+1D: c = a x + b y mod 4096, a bijection of the tile onto its 4096 values.
+
+    /usr/bin/python3 lattice_search.py     # deterministic (seeded); prints the chosen A per arity and its shares
+"""
+import itertools
+
+import numpy as np
+
+BAND = 16  # the low band on the 128-pixel grid: |b| < 16 bins = 1/8 cycle per pixel
+_b = np.arange(128)
+_bw = np.where(_b < 64, _b, _b - 128)
+_band = (_bw[:, None] ** 2 + _bw[None, :] ** 2) < BAND * BAND
+_band[0, 0] = False
+WHITE = _band.sum() / 128 ** 2
+
+
+def window(f0):
+    """Periodogram share per 128-grid bin of a unit wave of frequency f0 (cycles per pixel, array) cut to 64 px."""
+    x = np.arange(64)
+    d = _b[None, :] / 128.0 - np.asarray(f0)[:, None]
+    s = np.exp(2j * np.pi * d[:, :, None] * x[None, None, :]).sum(-1)
+    return np.abs(s) ** 2 / (64 * 128)
+
+
+_windows = {}
+
+
+def leak(c, q):
+    """Band share of waves at frequencies c / q (n x 2 integers, cycles per pixel)."""
+    if q not in _windows:
+        _windows[q] = window(np.arange(q) / q)
+    if q == 64:  # every frequency is on the grid: one table
+        if 'table' not in _windows:
+            e = _windows[q]
+            _windows['table'] = np.einsum('ax,yx,by->ab', e, _band, e)
+        return _windows['table'][c[:, 0], c[:, 1]]
+    e = _windows[q]
+    return np.einsum('nx,yx,ny->n', e[c[:, 0]], _band, e[c[:, 1]])
+
+
+def tent(c, q):
+    return np.where(c < q // 2, 2 * c, 2 * (q - 1 - c) + 1)
+
+
+def tent_modes(arity, q, K):
+    """Modes (|k_i| <= K) and DFT powers of the second-order Taylor model sum u_i + sum_{i<j} u_i u_j + sum u_i^2
+    over the tent-folded sub-cell coordinates u_i (centred)."""
+    u = (tent(np.arange(q), q) + 0.5) / q - 0.5
+    grids = np.meshgrid(*([u] * arity), indexing='ij')
+    F = sum(g + g * g for g in grids) + sum(grids[i] * grids[j] for i in range(arity) for j in range(i + 1, arity))
+    P = np.abs(np.fft.fftn(F) / F.size) ** 2
+    ks = np.array([k for k in itertools.product(range(-K, K + 1), repeat=arity) if any(k)])
+    w = P[tuple((ks % q).T)]
+    keep = w > 1e-30
+    return ks[keep], w[keep]
+
+
+def square_modes(arity, q, K, sigma=0.15):
+    """A stratum as large as the unit square (independent): Gaussian bumps of width sigma (the pattern table's)
+    centred at each of 0.1, 0.3, ..., 0.9 per axis, folded by the tent; one row of DFT powers per bump (the score
+    is the worst bump's: where the bump sits decides which modes carry its error)."""
+    u = (tent(np.arange(q), q) + 0.5) / q
+    ks = np.array([k for k in itertools.product(range(-K, K + 1), repeat=arity) if any(k)])
+    rows = []
+    for centre in itertools.product(np.arange(0.1, 1.0, 0.2), repeat=arity):
+        F = np.ones((q,) * arity)
+        for i, m in enumerate(centre):
+            shape = [1] * arity
+            shape[i] = q
+            F = F * np.exp(-(u - m) ** 2 / (2 * sigma ** 2)).reshape(shape)
+        rows.append((np.abs(np.fft.fftn(F) / F.size) ** 2)[tuple((ks % q).T)])
+    return ks, np.array(rows)
+
+
+def shift_modes(arity, K):
+    """The error of a shift has the integrand's Fourier modes times the base set's: weights 1 / |k|^4, |k_i| <= K
+    (an integrand with an edge, or the seam the shift makes; a smooth bump would weight only |k| <= 2)."""
+    ks = np.array([k for k in itertools.product(range(-K, K + 1), repeat=arity) if any(k)])
+    return ks, 1.0 / (ks ** 2).sum(1) ** 2
+
+
+def share(At, q, ks, w):
+    """w: weights, or one row of weights per integrand (then the worst integrand's share)."""
+    w = np.atleast_2d(w)
+    return ((w @ leak(np.mod(ks @ At, q), q)) / w.sum(1)).max()
+
+
+def search(arity, q, model, trials, bijective, seed=3, keep=1):
+    """The `keep` best candidates (share, A), best first."""
+    rng = np.random.default_rng(seed)
+    ks, w = model
+    x, y = np.meshgrid(np.arange(64), np.arange(64))
+    found = []
+    for _ in range(trials):
+        At = rng.integers(0, q, size=(arity, 2))
+        if bijective and arity == 2 and round(np.linalg.det(At)) % 2 == 0:
+            continue
+        if bijective and arity == 1 and len(np.unique((At[0, 0] * x + At[0, 1] * y) % q)) != q:
+            continue
+        found.append((share(At, q, ks, w), At))
+        found = sorted(found, key=lambda f: f[0])[:keep]
+    return found
+
+
+if __name__ == '__main__':
+    K = {1: 64, 2: 16, 3: 6}  # modes |k_i| <= K
+    for arity, q, trials in ((2, 64, 30000), (3, 64, 10000), (1, 4096, 5000)):
+        for name, model, bijective in (('strata', tent_modes(arity, q, K[arity]), arity < 3),
+                                       ('square', square_modes(arity, q, K[arity]), arity < 3),
+                                       ('shifts', shift_modes(arity, K[arity]), arity < 3)):
+            for s, At in search(arity, q, model, trials, bijective, keep=12 if (arity, name) == (2, 'shifts') else 1):
+                print(f'arity {arity} {name} (mod {q}): A = {At.tolist()}  low-band share {s:.2e} (white / share '
+                      f'{WHITE / s:.0f})')
