@@ -48,6 +48,7 @@ constexpr bool bijective1(const int32_t (&a)[2]) {
 static_assert(bijective1(kMaps[0].a1) && bijective1(kMaps[1].a1) && bijective1(kMaps[2].a1));
 
 constexpr uint64_t kSymmetryIndex = 0x5e77u, kOffsetIndex = 0x0ff5u;
+constexpr uint64_t kOffsetStream = 0x0ff5e75a17ed0001ull; // keys the per-stratum offsets apart from the tile's key
 
 } // namespace
 
@@ -77,7 +78,8 @@ LatticePixel::LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, u
 void CrossPixelStrata::place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const {
     // tent: the sub-cell order 0, 2, 4, ..., Q-2, Q-1, ..., 3, 1, so neighbouring values of c are neighbouring
     // sub-cells also across the wrap.
-    const uint64_t offsets = hashAt(hashCombine(tileKey, stratum), kOffsetIndex);
+    // One mix per point: the stratum id is the counter of the tile's offset stream (ids are distinct per stratum).
+    const uint64_t offsets = hashAt(tileKey ^ kOffsetStream, stratum);
     if (arity == 1) {
         constexpr uint32_t Q = 4096;
         const uint32_t c = (lattice.c[0] + uint32_t(offsets)) & (Q - 1);
