@@ -27,6 +27,7 @@
 #include "patterns.h"
 #include "permutation.h"
 #include "progressive_strata.h"
+#include "simd_avx512.h"
 
 #include <bit>
 
@@ -219,10 +220,13 @@ template <uint32_t Arity>
                                                   uint32_t count, float* out) {
     progressiveChunks<Arity>(set, grid, first, count, out);
 }
+// AVX-512: hand-written (stratified_avx512.cpp).
 template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
-                                                      uint32_t count, float* out) {
-    progressiveChunks<Arity>(set, grid, first, count, out);
+void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
+                            float* out) {
+    const ProgressiveKernelArgs args{set.orderSeed, set.valueSeed, set.jitterKey, grid.pointBits,
+                                     {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
+    progressiveAvx512(args, Arity, first, count, out);
 }
 #endif
 
