@@ -15,6 +15,7 @@
 #include "patterns.h"
 #include "permutation.h"
 #include "pointsets/pointsets.h"
+#include "simd_avx512.h"
 
 #include <algorithm>
 #include <bit>
@@ -175,7 +176,16 @@ template <uint32_t Arity>
 void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count, float* out) {
 #if defined(STIPPLE_BATCH_ISA_CLONES)
     switch (batchIsa()) {
-    case BatchIsa::Avx512: return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
+    case BatchIsa::Avx512: {
+        if constexpr (Arity <= 2) { // 1D and 2D power-of-two sets: hand-written (poisson_avx512.cpp)
+            const PoissonKernelArgs args{map.orderSeed,
+                                         {map.source[0], map.source[1], map.source[2]},
+                                         {map.sign[0], map.sign[1], map.sign[2]},
+                                         {map.shift[0], map.shift[1], map.shift[2]}};
+            if (poissonLayeredAvx512(args, Arity, stored, points, first, count, out)) return;
+        }
+        return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
+    }
     case BatchIsa::Avx2: return serveLayeredAvx2<Arity>(map, stored, points, first, count, out);
     case BatchIsa::Baseline: break;
     }

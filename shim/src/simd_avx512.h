@@ -21,14 +21,16 @@ struct ProgressiveKernelArgs {
 };
 void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32_t first, uint32_t count, float* out);
 
-// A poisson set of 2^j points served in its layered order (pattern_poisson.cpp): the stored point of position p
-// is p ^ (orderSeed & (bit_floor(p) - 1)), its axes read through source[], then shifted and wrapped.
+// A poisson set served in its layered order (pattern_poisson.cpp): position p reads stored point
+// p ^ (orderSeed & (bit_floor(p) - 1)), output axis c its axis source[c], then shift + sign * x wrapped into [0,1).
+// Handles 1D and 2D sets of 2^j points from a first position on the 16-float grid; returns false (nothing done)
+// for the others.
 struct PoissonKernelArgs {
     uint32_t orderSeed;
     uint32_t source[3];
     float sign[3], shift[3];
 };
-void poissonLayeredAvx512(const PoissonKernelArgs& args, uint32_t arity, const float* stored, uint32_t first,
-                          uint32_t count, float* out);
+bool poissonLayeredAvx512(const PoissonKernelArgs& args, uint32_t arity, const float* stored, uint32_t points,
+                          uint32_t first, uint32_t count, float* out);
 
 } // namespace stipple
