@@ -14,8 +14,7 @@ namespace stipple {
 
 // The progressive stratified order (pattern_stratified.cpp): seeds of the set and the grid's shape.
 struct ProgressiveKernelArgs {
-    uint32_t orderSeed, valueSeed;
-    uint64_t jitterKey;
+    uint32_t orderSeed, valueSeed, jitterSeed;
     uint32_t pointBits;
     uint32_t axisBits[3];
 };

@@ -32,61 +32,14 @@ STIPPLE_KERNEL __m512i laineKarras(__m512i x, uint32_t seed) {
     return _mm512_xor_si512(x, mul32(x, 0x53a22864u));
 }
 
-// (v | v >> s) & m in one ternary-logic op after the shift.
-template <int S>
-STIPPLE_KERNEL __m512i foldBits(__m512i v, uint32_t m) {
-    return _mm512_ternarylogic_epi32(v, _mm512_srli_epi32(v, S), _mm512_set1_epi32(int(m)), 0xa8);
-}
-
-STIPPLE_KERNEL __m512i compactEvery2(__m512i v) { // progressive_strata.h's, per lane
-    v = _mm512_and_si512(v, _mm512_set1_epi32(0x55555555));
-    v = foldBits<1>(v, 0x33333333u);
-    v = foldBits<2>(v, 0x0f0f0f0fu);
-    v = foldBits<4>(v, 0x00ff00ffu);
-    return foldBits<8>(v, 0x0000ffffu);
-}
-
-STIPPLE_KERNEL __m512i compactEvery3(__m512i v) {
-    v = _mm512_and_si512(v, _mm512_set1_epi32(0x09249249));
-    v = foldBits<2>(v, 0x030c30c3u);
-    v = foldBits<4>(v, 0x0300f00fu);
-    v = foldBits<8>(v, 0x030000ffu);
-    return foldBits<16>(v, 0x000003ffu);
-}
-
 STIPPLE_KERNEL __m128i count(uint32_t s) { return _mm_cvtsi32_si128(int(s)); }
 
-// The high (Odd) or low dwords of the 64-bit lanes of lo (points 0..7) and hi (points 8..15), as 16 lanes.
-template <bool Odd>
-STIPPLE_KERNEL __m512i dwordsOf(__m512i lo, __m512i hi) {
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    return _mm512_permutex2var_epi32(lo, Odd ? _mm512_add_epi32(even, _mm512_set1_epi32(1)) : even, hi);
-}
-
-STIPPLE_KERNEL __m512i mul64(__m512i x, uint64_t c) { return _mm512_mullo_epi64(x, _mm512_set1_epi64(int64_t(c))); }
-
-STIPPLE_KERNEL __m512i mix64(__m512i z) { // hash.h's, per 64-bit lane
-    z = mul64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)), 0xbf58476d1ce4e5b9ull);
-    z = mul64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)), 0x94d049bb133111ebull);
-    return _mm512_xor_si512(z, _mm512_srli_epi64(z, 31));
-}
-
-// hashAt(key, q) for 8 lanes of q (64-bit).
-STIPPLE_KERNEL __m512i hashAt(uint64_t key, __m512i q) {
-    const __m512i counter = _mm512_add_epi64(q, _mm512_set1_epi64(1));
-    return mix64(_mm512_xor_si512(_mm512_set1_epi64(int64_t(key)), mul64(counter, kGolden64)));
-}
-
-// The 1D jitter: one multiply of the keyed counter (its top 32 bits are used).
-STIPPLE_KERNEL __m512i jitter1D(uint64_t key, __m512i q) {
-    return mul64(_mm512_xor_si512(_mm512_set1_epi64(int64_t(key)), mul64(q, kGolden64)), 0xd1342543de82ef95ull);
-}
-
-// (cell << (24 - axisBits)) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
-STIPPLE_KERNEL __m512 value(__m512i cell, __m512i jitter, uint32_t axisBits) {
-    const __m512i bits = _mm512_or_si512(_mm512_sll_epi32(cell, count(24 - axisBits)),
-                                         _mm512_srl_epi32(jitter, count(8 + axisBits)));
-    return _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f));
+// axisJitter of pattern_stratified.cpp (lowbias32 of ((q << 2) | c) ^ seed), given t = (q << 2) ^ seed.
+STIPPLE_KERNEL __m512i axisJitter(__m512i t, uint32_t c) {
+    __m512i x = c ? _mm512_xor_si512(t, _mm512_set1_epi32(int(c))) : t;
+    x = mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 16)), 0x7feb352du);
+    x = mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
+    return _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
 }
 
 // Stores the first `floats` (<= 16) lanes.
@@ -142,6 +95,29 @@ STIPPLE_KERNEL void cells2D(__m512i q, __m512i& x, __m512i& y) {
                                            _mm512_gf2p8affine_epi64_epi8(bytes, _mm512_set1_epi64(odd), 0));
 }
 
+// 3D cells of q, as cell[c] << (24 - axisBits[c]) before masking: axis c's bit t from the top is q's bit 3t + c.
+// A 6-bit chunk k of q (bits 6k..6k+5) holds bits t = 2k, 2k + 1 of every axis. A multishift puts chunk k in byte
+// 3 - k of its dword, a 64-entry byte table (one VBMI permute per axis) maps it to the axis' two bits (t = 2k in
+// bit 1), and one multiply by 2^6 + 2^12 + 2^18 + 2^24 moves byte 3 - k's field to bits 31 - 2k and 30 - 2k: the
+// other partial products land on disjoint bits below or past bit 31, so nothing carries into the top byte.
+struct ChunkAxes {
+    alignas(64) uint8_t table[3][64];
+    constexpr ChunkAxes() : table() {
+        for (uint32_t c = 0; c < 3; ++c)
+            for (uint32_t x = 0; x < 64; ++x) table[c][x] = uint8_t((((x >> c) & 1u) << 1) | ((x >> (c + 3)) & 1u));
+    }
+};
+inline constexpr ChunkAxes kChunkAxes{};
+
+STIPPLE_KERNEL void cells3D(__m512i q, __m512i top[3]) {
+    // Byte 3 - k of each dword <- bits 6k.. of the dword (the permute reads the low 6 bits of a byte).
+    const __m512i chunks = _mm512_multishift_epi64_epi8(_mm512_set1_epi64(int64_t(0x20262c3200060c12ull)), q);
+    for (uint32_t c = 0; c < 3; ++c) {
+        const __m512i fields = _mm512_permutexvar_epi8(chunks, _mm512_load_si512(kChunkAxes.table[c]));
+        top[c] = _mm512_srli_epi32(mul32(fields, (1u << 6) | (1u << 12) | (1u << 18) | (1u << 24)), 8);
+    }
+}
+
 // (top & topMask) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
 STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift) {
     const __m512i bits = _mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea);
@@ -171,46 +147,37 @@ template <uint32_t Arity>
                 ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
                 : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
         const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, a.orderSeed)), unused);
-        const __m512i q = _mm512_and_si512(laineKarras(shuffled, a.valueSeed), mask);
-        // The jitter hash in 64-bit lanes, points 0..7 and 8..15.
-        const __m512i qLo = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(q));
-        const __m512i qHi = _mm512_cvtepu32_epi64(_mm512_extracti64x4_epi64(q, 1));
+        const __m512i scrambled = laineKarras(shuffled, a.valueSeed);
+        const __m512i q = _mm512_and_si512(scrambled, mask);
         const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
         float* o = out + size_t(base) * Arity;
         if constexpr (Arity == 1) {
-            const __m512i jitter = dwordsOf<true>(jitter1D(a.jitterKey, qLo), jitter1D(a.jitterKey, qHi));
+            // The jitter word is the unmasked scramble (progressivePoint).
             // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
             const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
             const __m512i top = _mm512_shuffle_epi8(
                 bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
-            store(o, valueOf(top, topMask[0], jitter, jitterShift[0]), floats);
+            store(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
         } else {
-            const __m512i hLo = hashAt(a.jitterKey, qLo), hHi = hashAt(a.jitterKey, qHi);
+            const __m512i t = _mm512_xor_si512(_mm512_slli_epi32(q, 2), _mm512_set1_epi32(int(a.jitterSeed)));
             __m512 v[Arity];
             if constexpr (Arity == 2) {
                 __m512i top0, top1;
                 cells2D(q, top0, top1);
-                const __m512 x = valueOf(top0, topMask[0], dwordsOf<true>(hLo, hHi), jitterShift[0]);
-                const __m512 y = valueOf(top1, topMask[1], dwordsOf<false>(hLo, hHi), jitterShift[1]);
+                const __m512 x = valueOf(top0, topMask[0], axisJitter(t, 0), jitterShift[0]);
+                const __m512 y = valueOf(top1, topMask[1], axisJitter(t, 1), jitterShift[1]);
                 const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
                 v[0] = _mm512_permutex2var_ps(x, lo, y);
                 v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
             } else {
-                const __m512i r = reverse32(q);
+                __m512i top[3];
+                cells3D(q, top);
                 __m512 axis[3];
-                for (uint32_t c = 0; c < 3; ++c) {
-                    const __m512i cell = _mm512_srl_epi32(compactEvery3(_mm512_srl_epi32(r, stipple::count(4 - c))),
-                                                          stipple::count(10 - a.axisBits[c]));
-                    const __m128i shift = stipple::count(43 - 21 * c);
-                    const __m512i jitter = dwordsOf<false>(_mm512_slli_epi64(_mm512_srl_epi64(hLo, shift), 11),
-                                                           _mm512_slli_epi64(_mm512_srl_epi64(hHi, shift), 11));
-                    axis[c] = valueOf(_mm512_sll_epi32(cell, stipple::count(24 - a.axisBits[c])), topMask[c], jitter,
-                                      jitterShift[c]);
-                }
+                for (uint32_t c = 0; c < 3; ++c) axis[c] = valueOf(top[c], topMask[c], axisJitter(t, c), jitterShift[c]);
                 // Interleave x, y, z.
                 for (uint32_t w = 0; w < 3; ++w) {
-                    const __m512 t = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
-                    v[w] = _mm512_permutex2var_ps(t, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
+                    const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
+                    v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
                 }
             }
             for (uint32_t w = 0; w < Arity; ++w)
