@@ -56,7 +56,8 @@ struct TorusMap {
         const uint32_t axisOrder = arity == 3 ? uint32_t(symmetry % 6) : arity == 2 ? uint32_t(symmetry % 2) * 2 : 0;
         for (uint32_t c = 0; c < 3; ++c) {
             source[c] = kAxisOrders[axisOrder][c];
-            sign[c] = (symmetry >> (32 + c)) & 1 ? -1.0f : 1.0f;
+            // The sign bit set from the hash bit, not a branch (a coin flip per call, mispredicted half the time).
+            sign[c] = std::bit_cast<float>(0x3f800000u | (static_cast<uint32_t>(symmetry >> (32 + c)) & 1u) << 31);
         }
     }
 
@@ -177,7 +178,7 @@ void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint3
 #if defined(STIPPLE_BATCH_ISA_CLONES)
     switch (batchIsa()) {
     case BatchIsa::Avx512: {
-        if constexpr (Arity <= 2) { // 1D and 2D power-of-two sets: hand-written (poisson_avx512.cpp)
+        { // power-of-two sets: hand-written (poisson_avx512.cpp)
             const PoissonKernelArgs args{map.orderSeed,
                                          {map.source[0], map.source[1], map.source[2]},
                                          {map.sign[0], map.sign[1], map.sign[2]},

@@ -16,6 +16,16 @@ namespace stipple {
 
 namespace {
 
+// wrapUnit(shift + sign * v) of pattern_poisson.cpp per lane (sign * v is exact, so a fused multiply-add rounds the
+// same).
+[[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline __m512 wrapped(__m512 sign, __m512 v, __m512 shift) {
+    // x - floor(x): for x >= 0 it is x - trunc(x), exact; for x in (-1, 0) it is x + 1 rounded to nearest, what
+    // wrapUnit adds. (VREDUCEPS would round that sum down.)
+    const __m512 x = _mm512_fmadd_ps(sign, v, shift);
+    const __m512 r = _mm512_sub_ps(x, _mm512_roundscale_ps(x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
+    return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(r, _mm512_set1_ps(1.0f), _CMP_LT_OQ), r);
+}
+
 template <uint32_t Arity>
 [[STIPPLE_TARGET_AVX512]] void layered(const PoissonKernelArgs& a, const float* stored, uint32_t points,
                                        uint32_t first, uint32_t count, float* out) {
@@ -31,9 +41,9 @@ template <uint32_t Arity>
         sign = _mm512_mask_mov_ps(sign, 0xaaaa, _mm512_set1_ps(a.sign[1]));
     }
     const __m512i seed = _mm512_set1_epi32(int(a.orderSeed));
-    // Block 0: bit_floor(i) - 1 per point (0 for i < 2).
+    // Block 0: bit_floor(i) - 1 per point (0 for i < 2), a constant of the lane.
     const __m512i smallLayers = _mm512_srli_epi32(
-        _mm512_srlv_epi32(_mm512_set1_epi32(-1), _mm512_lzcnt_epi32(_mm512_or_si512(point, _mm512_set1_epi32(1)))), 1);
+        _mm512_setr_epi32(0, 0, 2, 2, 6, 6, 6, 6, 14, 14, 14, 14, 14, 14, 14, 14), Arity);
     const __m512i firstPermute =
         _mm512_add_epi32(_mm512_mullo_epi32(_mm512_xor_si512(point, _mm512_and_si512(seed, smallLayers)),
                                             _mm512_set1_epi32(Arity)),
@@ -52,13 +62,7 @@ template <uint32_t Arity>
             const uint32_t block = b ^ (a.orderSeed & (std::bit_floor(b) - 1) & ~(P - 1));
             v = _mm512_permutexvar_ps(permute, _mm512_loadu_ps(stored + size_t(block) * Arity));
         }
-        // wrapUnit(shift + sign * v) of pattern_poisson.cpp (sign * v is exact, so a fused multiply-add rounds the
-        // same).
-        __m512 r = _mm512_fmadd_ps(sign, v, shift);
-        r = _mm512_sub_ps(r, _mm512_cvtepi32_ps(_mm512_cvttps_epi32(r)));
-        r = _mm512_add_ps(r, _mm512_castsi512_ps(_mm512_and_si512(_mm512_srai_epi32(_mm512_castps_si512(r), 31),
-                                                                   _mm512_set1_epi32(0x3f800000))));
-        r = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(r, _mm512_set1_ps(1.0f), _CMP_LT_OQ), r);
+        const __m512 r = wrapped(sign, v, shift);
         const uint32_t floats = (count - base < P ? count - base : P) * Arity;
         float* o = out + size_t(base) * Arity;
         if (floats == 16)
@@ -68,12 +72,72 @@ template <uint32_t Arity>
     }
 }
 
+
+// 3D: blocks of 16 points (48 floats, three registers). Output float f = 16w + l of a block is axis c = f % 3 of
+// point i = f / 3, read from stored float 3 (i ^ s) + source[c] of the block: two permutes (floats 0..31 and
+// 32..47) and a blend per output register, with indices fixed per call.
+[[STIPPLE_TARGET_AVX512]] void layered3(const PoissonKernelArgs& a, const float* stored, uint32_t points,
+                                        uint32_t first, uint32_t count, float* out) {
+    // Per output register w: lane l's point i and axis c, and bit_floor(i) - 1 (0 for i < 2), constants.
+    const __m512i pointOf[3] = {_mm512_setr_epi32(0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 5),
+                                _mm512_setr_epi32(5, 5, 6, 6, 6, 7, 7, 7, 8, 8, 8, 9, 9, 9, 10, 10),
+                                _mm512_setr_epi32(10, 11, 11, 11, 12, 12, 12, 13, 13, 13, 14, 14, 14, 15, 15, 15)};
+    const __m512i axisOf[3] = {_mm512_setr_epi32(0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0),
+                               _mm512_setr_epi32(1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1),
+                               _mm512_setr_epi32(2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2)};
+    const __m512i layersOf[3] = {_mm512_setr_epi32(0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 3, 3, 3, 3),
+                                 _mm512_setr_epi32(3, 3, 3, 3, 3, 3, 3, 3, 7, 7, 7, 7, 7, 7, 7, 7),
+                                 _mm512_setr_epi32(7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7)};
+    const __m512i seed = _mm512_set1_epi32(int(a.orderSeed));
+    // From scalars: a vector load of the just-written arguments would wait for store forwarding to fail.
+    const __m512i source = _mm512_zextsi128_si512(_mm_setr_epi32(int(a.source[0]), int(a.source[1]), int(a.source[2]), 0));
+    const __m512 shift = _mm512_zextps128_ps512(_mm_setr_ps(a.shift[0], a.shift[1], a.shift[2], 0.0f));
+    const __m512 sign = _mm512_zextps128_ps512(_mm_setr_ps(a.sign[0], a.sign[1], a.sign[2], 0.0f));
+    __m512i firstIndex[3], index[3];
+    __m512 shifts[3], signs[3];
+    for (uint32_t w = 0; w < 3; ++w) {
+        const __m512i axis = _mm512_permutexvar_epi32(axisOf[w], source);
+        firstIndex[w] = _mm512_add_epi32(
+            _mm512_mullo_epi32(_mm512_set1_epi32(3), _mm512_xor_si512(pointOf[w], _mm512_and_si512(seed, layersOf[w]))), axis);
+        index[w] = _mm512_add_epi32(
+            _mm512_mullo_epi32(_mm512_set1_epi32(3), _mm512_xor_si512(pointOf[w], _mm512_set1_epi32(int(a.orderSeed & 15u)))), axis);
+        shifts[w] = _mm512_permutexvar_ps(axisOf[w], shift);
+        signs[w] = _mm512_permutexvar_ps(axisOf[w], sign);
+    }
+    const uint32_t storedFloats = points >= 16 ? 48 : points * 3;
+    for (uint32_t base = 0; base < count; base += 16) {
+        const uint32_t b = first + base;
+        const __m512i* lanes = b == 0 ? firstIndex : index;
+        const float* from = stored + size_t(b == 0 ? 0 : b ^ (a.orderSeed & (std::bit_floor(b) - 1) & ~15u)) * 3;
+        __m512 r[3];
+        for (uint32_t w = 0; w < 3; ++w) {
+            const uint32_t left = storedFloats > 16 * w ? storedFloats - 16 * w : 0;
+            r[w] = left >= 16 ? _mm512_loadu_ps(from + 16 * w)
+                              : _mm512_maskz_loadu_ps(__mmask16((1u << left) - 1u), from + 16 * w);
+        }
+        const uint32_t floats = (count - base < 16 ? count - base : 16) * 3;
+        float* o = out + size_t(base) * 3;
+        for (uint32_t w = 0; w < 3 && 16 * w < floats; ++w) {
+            const __m512i j = lanes[w];
+            const __m512 low = _mm512_permutex2var_ps(r[0], j, r[1]);
+            const __m512 v = _mm512_mask_permutexvar_ps(low, _mm512_cmpge_epi32_mask(j, _mm512_set1_epi32(32)), j, r[2]);
+            const __m512 x = wrapped(signs[w], v, shifts[w]);
+            if (floats - 16 * w >= 16)
+                _mm512_storeu_ps(o + 16 * w, x);
+            else
+                _mm512_mask_storeu_ps(o + 16 * w, __mmask16((1u << (floats - 16 * w)) - 1u), x);
+        }
+    }
+}
+
 } // namespace
 
 bool poissonLayeredAvx512(const PoissonKernelArgs& args, uint32_t arity, const float* stored, uint32_t points,
                           uint32_t first, uint32_t count, float* out) {
-    if (arity > 2 || !std::has_single_bit(points) || first % (16 / arity) != 0) return false;
-    if (arity == 1)
+    if ((points & (points - 1)) != 0 || first % (arity == 3 ? 16 : 16 / arity) != 0) return false;
+    if (arity == 3)
+        layered3(args, stored, points, first, count, out);
+    else if (arity == 1)
         layered<1>(args, stored, points, first, count, out);
     else
         layered<2>(args, stored, points, first, count, out);

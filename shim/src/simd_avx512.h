@@ -22,8 +22,8 @@ void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32
 
 // A poisson set served in its layered order (pattern_poisson.cpp): position p reads stored point
 // p ^ (orderSeed & (bit_floor(p) - 1)), output axis c its axis source[c], then shift + sign * x wrapped into [0,1).
-// Handles 1D and 2D sets of 2^j points from a first position on the 16-float grid; returns false (nothing done)
-// for the others.
+// Handles sets of 2^j points from a first position on the 16-float grid (on the 16-point grid in 3D); returns false
+// (nothing done) for the others.
 struct PoissonKernelArgs {
     uint32_t orderSeed;
     uint32_t source[3];
