@@ -34,10 +34,10 @@ STIPPLE_KERNEL __m512i laineKarras(__m512i x, uint32_t seed) {
 
 STIPPLE_KERNEL __m128i count(uint32_t s) { return _mm_cvtsi32_si128(int(s)); }
 
-// axisJitter of pattern_stratified.cpp (lowbias32 of ((q << 2) | c) ^ seed), given t = (q << 2) ^ seed.
-STIPPLE_KERNEL __m512i axisJitter(__m512i t, uint32_t c) {
-    __m512i x = c ? _mm512_xor_si512(t, _mm512_set1_epi32(int(c))) : t;
-    x = mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 16)), 0x7feb352du);
+// axisJitter of pattern_stratified.cpp (lowbias32 of ((q << 2) | c) ^ seed), given u = t ^ (t >> 16) for
+// t = (q << 2) ^ seed: lowbias32's first step is the same for every axis (c < 4 has no bits at 16 and up).
+STIPPLE_KERNEL __m512i axisJitter(__m512i u, uint32_t c) {
+    __m512i x = mul32(c ? _mm512_xor_si512(u, _mm512_set1_epi32(int(c))) : u, 0x7feb352du);
     x = mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
     return _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
 }
@@ -112,9 +112,12 @@ inline constexpr ChunkAxes kChunkAxes{};
 STIPPLE_KERNEL void cells3D(__m512i q, __m512i top[3]) {
     // Byte 3 - k of each dword <- bits 6k.. of the dword (the permute reads the low 6 bits of a byte).
     const __m512i chunks = _mm512_multishift_epi64_epi8(_mm512_set1_epi64(int64_t(0x20262c3200060c12ull)), q);
+    // One multiply, not the shifts and adds a compiler would make of it.
+    __m512i spread = _mm512_set1_epi32((1 << 6) | (1 << 12) | (1 << 18) | (1 << 24));
+    asm("" : "+v"(spread));
     for (uint32_t c = 0; c < 3; ++c) {
         const __m512i fields = _mm512_permutexvar_epi8(chunks, _mm512_load_si512(kChunkAxes.table[c]));
-        top[c] = _mm512_srli_epi32(mul32(fields, (1u << 6) | (1u << 12) | (1u << 18) | (1u << 24)), 8);
+        top[c] = _mm512_srli_epi32(_mm512_mullo_epi32(fields, spread), 8);
     }
 }
 
@@ -132,22 +135,30 @@ template <uint32_t Arity>
     const __m128i unused = stipple::count(32 - bits); // >= 32 shifts to 0, as reverseBits(v, 0) is 0
     const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
     // reverseBits(p, bits) of an aligned block p = b + i (16 | b, i < 16 <= 2^bits) is reverseBits(b) | that of i.
-    const __m512i reversedLanes = _mm512_srl_epi32(reverse32(lanes), unused);
+    // (A constant: computing it would sit on the path of a one-block call.)
+    const __m512i reversedLanes = _mm512_srl_epi32(
+        _mm512_setr_epi32(0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u), 0x60000000,
+                          int(0xe0000000u), 0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u), 0x30000000,
+                          int(0xb0000000u), 0x70000000, int(0xf0000000u)),
+        unused);
     __m512i topMask[3];
     __m128i jitterShift[3];
     for (uint32_t c = 0; c < Arity; ++c) {
         topMask[c] = _mm512_set1_epi32(int(((1u << a.axisBits[c]) - 1u) << (24 - a.axisBits[c])));
         jitterShift[c] = stipple::count(8 + a.axisBits[c]);
     }
+    const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     for (uint32_t base = 0; base < count; base += 16) {
         const uint32_t blockFirst = first + base;
         // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
+        // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
         const __m512i reversed =
-            blockFirst % 16 == 0 && bits >= 4
+            blockFirst == 0 && bits >= 4 ? reversedLanes
+            : blockFirst % 16 == 0 && bits >= 4
                 ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
                 : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
-        const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, a.orderSeed)), unused);
-        const __m512i scrambled = laineKarras(shuffled, a.valueSeed);
+        const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, orderSeed)), unused);
+        const __m512i scrambled = laineKarras(shuffled, valueSeed);
         const __m512i q = _mm512_and_si512(scrambled, mask);
         const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
         float* o = out + size_t(base) * Arity;
@@ -159,7 +170,11 @@ template <uint32_t Arity>
                 bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
             store(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
         } else {
-            const __m512i t = _mm512_xor_si512(_mm512_slli_epi32(q, 2), _mm512_set1_epi32(int(a.jitterSeed)));
+            // u = t ^ (t >> 16) with t = (q << 2) ^ seed is (q << 2) ^ (q >> 14) ^ (seed ^ seed >> 16): one
+            // three-way XOR after two parallel shifts.
+            const __m512i t = _mm512_ternarylogic_epi32(_mm512_slli_epi32(q, 2), _mm512_srli_epi32(q, 14),
+                                                        _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))),
+                                                        0x96);
             __m512 v[Arity];
             if constexpr (Arity == 2) {
                 __m512i top0, top1;
