@@ -73,10 +73,15 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
 // The 32-bit jitter word of axis c of cell q in 2D and 3D: lowbias32 (Wellons' two-multiply finaliser) of
 // (q, c) keyed by the set's jitter seed. 32-bit lane multiplies are one instruction in every vector ISA, the
 // 64-bit finaliser the jitter used before took three 64-bit ones; the value keeps the word's top 24 - axisBits
-// bits, so the cell bits plus the jitter still fill all 24 bits of the float.
-constexpr uint32_t axisJitter(uint32_t q, uint32_t c, uint32_t seed) {
-    uint32_t x = ((q << 2) | c) ^ seed;
-    x ^= x >> 16;
+// bits, so the cell bits plus the jitter still fill all 24 bits of the float. lowbias32's first step,
+// x ^= x >> 16, is the same for every axis (c < 4 has no bits at 16 and up): axisJitter takes its result for
+// c = 0, u = jitterBase(q, seed).
+constexpr uint32_t jitterBase(uint32_t q, uint32_t seed) {
+    const uint32_t t = (q << 2) ^ seed;
+    return t ^ (t >> 16);
+}
+constexpr uint32_t axisJitter(uint32_t u, uint32_t c) {
+    uint32_t x = u ^ c;
     x *= 0x7feb352du;
     x ^= x >> 15;
     x *= 0x846ca68bu;
@@ -101,7 +106,7 @@ template <uint32_t Arity, bool Blue>
     // top bits mix most): 32 - pointBits >= 24 - axisBits of them, for free. 2D and 3D: axisJitter per axis.
     uint32_t jitter[3] = {scrambled, 0, 0};
     if constexpr (Arity >= 2)
-        for (uint32_t c = 0; c < Arity; ++c) jitter[c] = axisJitter(q, c, set.jitterSeed);
+        for (uint32_t c = 0; c < Arity; ++c) jitter[c] = axisJitter(jitterBase(q, set.jitterSeed), c);
     uint32_t top[3]; // cell[c] << (24 - axisBits[c])
     if (grid.cellTable) {
         const uint32_t* words = grid.cellTable->data() + size_t(q) * Arity;
@@ -193,7 +198,7 @@ template <uint32_t Arity>
         }
         if constexpr (Arity >= 2)
             for (uint32_t c = 0; c < Arity; ++c)
-                for (uint32_t i = 0; i < n; ++i) jitter[c][i] = axisJitter(q[i], c, jitterSeed);
+                for (uint32_t i = 0; i < n; ++i) jitter[c][i] = axisJitter(jitterBase(q[i], jitterSeed), c);
         float* o = out + size_t(base) * Arity;
         for (uint32_t i = 0; i < n; ++i) {
             // progressiveCell with one reversal of q for all axes: q's bit a * t + c (axis c's bit t from the
