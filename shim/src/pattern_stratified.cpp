@@ -15,10 +15,11 @@
 //    Hence every prefix of 2^j points (and every aligned block of 2^j) holds one point in each cell of the coarse
 //    2^j-cell grid of the first j interleaved bits, uniformly placed in it (progressive jittered sampling). Both
 //    seeds come from the (pixel, dimension, block) key.
-//    The jitter (a value's 24 - axisBits bits below its cell) is a hash of q alone, so it does not depend on the
-//    order: in 1D the value scramble's own bits above pointBits (V's output before masking: Owen scrambling's
-//    jitter, at no cost), in 2D and 3D a 32-bit finaliser of (q, axis) per axis (axisJitter). Both are 32-bit
-//    integer work, which every vector ISA does in one instruction per step (a 64-bit hash did not).
+//    The jitter (a value's 24 - axisBits bits below its cell) is a function of the cell alone, so it does not
+//    depend on the order: in 1D the value scramble's own bits above pointBits (V's output before masking: Owen
+//    scrambling's jitter, at no cost), in 2D and 3D a 32-bit finaliser per axis of (S(p), axis), S(p) being the
+//    cell's q before V (axisJitter). Both are 32-bit integer work, which every vector ISA does in one instruction
+//    per step (a 64-bit hash did not).
 //  - other grids (non-power-of-two axes, padded grids): a hashed random permutation of the points (Kensler 2013):
 //    a prefix is a uniformly random subset of the strata.
 // Per (pixel, dimension, block) the key gives the order (rotation or permutation), the padded lines and hole
@@ -70,14 +71,14 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
     return x;
 }
 
-// The 32-bit jitter word of axis c of cell q in 2D and 3D: lowbias32 (Wellons' two-multiply finaliser) of
-// (q, c) keyed by the set's jitter seed. 32-bit lane multiplies are one instruction in every vector ISA, the
-// 64-bit finaliser the jitter used before took three 64-bit ones; the value keeps the word's top 24 - axisBits
-// bits, so the cell bits plus the jitter still fill all 24 bits of the float. lowbias32's first step,
-// x ^= x >> 16, is the same for every axis (c < 4 has no bits at 16 and up): axisJitter takes its result for
-// c = 0, u = jitterBase(q, seed).
-constexpr uint32_t jitterBase(uint32_t q, uint32_t seed) {
-    const uint32_t t = (q << 2) ^ seed;
+// The 32-bit jitter word of axis c in 2D and 3D: lowbias32 (Wellons' two-multiply finaliser) of (s, c) keyed by
+// the set's jitter seed, s = S(p) < 2^pointBits the shuffled index (V maps it to the cell's q one to one). 32-bit
+// lane multiplies are one instruction in every vector ISA, the 64-bit finaliser the jitter used before took three
+// 64-bit ones; the value keeps the word's top 24 - axisBits bits, so the cell bits plus the jitter still fill all 24
+// bits of the float. lowbias32's first step, x ^= x >> 16, is the same for every axis (c < 4 has no bits at 16 and
+// up): axisJitter takes its result for c = 0, u = jitterBase(s, seed).
+constexpr uint32_t jitterBase(uint32_t s, uint32_t seed) {
+    const uint32_t t = (s << 2) ^ seed;
     return t ^ (t >> 16);
 }
 constexpr uint32_t axisJitter(uint32_t u, uint32_t c) {
@@ -101,12 +102,13 @@ template <uint32_t Arity, bool Blue>
             : reverseBits(laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits);
     const uint32_t scrambled = laineKarras(shuffled, set.valueSeed);
     const uint32_t q = scrambled & mask;
-    // The jitter words (a value takes the top 24 - axisBits bits of its axis' word). 1D: the value scramble's
-    // bits at and above pointBits, a hash of q's bits (Owen scrambling's own jitter; LK carries low bits up, so the
-    // top bits mix most): 32 - pointBits >= 24 - axisBits of them, for free. 2D and 3D: axisJitter per axis.
+    // The jitter words (a value takes the top 24 - axisBits bits of its axis' word), functions of the cell alone:
+    // 1D: the value scramble's bits at and above pointBits, a hash of q's bits (Owen scrambling's own jitter; LK
+    // carries low bits up, so the top bits mix most): 32 - pointBits >= 24 - axisBits of them, for free. 2D and 3D:
+    // axisJitter per axis of S(p), which V maps to q one to one (the same cell), so the hash does not wait for V.
     uint32_t jitter[3] = {scrambled, 0, 0};
     if constexpr (Arity >= 2)
-        for (uint32_t c = 0; c < Arity; ++c) jitter[c] = axisJitter(jitterBase(q, set.jitterSeed), c);
+        for (uint32_t c = 0; c < Arity; ++c) jitter[c] = axisJitter(jitterBase(shuffled, set.jitterSeed), c);
     uint32_t top[3]; // cell[c] << (24 - axisBits[c])
     if (grid.cellTable) {
         const uint32_t* words = grid.cellTable->data() + size_t(q) * Arity;
@@ -173,7 +175,7 @@ template <uint32_t Arity>
         topShift[c] = 24 - axisBits[c];
         jitterShift[c] = 8 + axisBits[c];
     }
-    alignas(64) uint32_t q[kChunk];
+    alignas(64) uint32_t q[kChunk], cellKey[kChunk]; // cellKey: S(p), what 2D and 3D hash for the jitter
     alignas(64) uint32_t jitter[3][kChunk];
     for (uint32_t base = 0; base < count; base += kChunk) {
         const uint32_t n = count - base < kChunk ? count - base : kChunk;
@@ -185,6 +187,7 @@ template <uint32_t Arity>
             for (uint32_t i = 0; i < kChunk; ++i) {
                 const uint32_t reversed = ((reversedFirst | kReversedLanes.word[i]) >> (31 - bits)) >> 1;
                 const uint32_t shuffled = reverseLow(laineKarras(reversed, orderSeed) & mask, bits);
+                cellKey[i] = shuffled;
                 jitter[0][i] = laineKarras(shuffled, valueSeed); // 1D's jitter word (progressivePoint)
                 q[i] = jitter[0][i] & mask;
             }
@@ -192,13 +195,14 @@ template <uint32_t Arity>
             for (uint32_t i = 0; i < n; ++i) {
                 const uint32_t shuffled =
                     reverseLow(laineKarras(reverseLow(chunkFirst + i, bits), orderSeed) & mask, bits);
+                cellKey[i] = shuffled;
                 jitter[0][i] = laineKarras(shuffled, valueSeed);
                 q[i] = jitter[0][i] & mask;
             }
         }
         if constexpr (Arity >= 2)
             for (uint32_t c = 0; c < Arity; ++c)
-                for (uint32_t i = 0; i < n; ++i) jitter[c][i] = axisJitter(jitterBase(q[i], jitterSeed), c);
+                for (uint32_t i = 0; i < n; ++i) jitter[c][i] = axisJitter(jitterBase(cellKey[i], jitterSeed), c);
         float* o = out + size_t(base) * Arity;
         for (uint32_t i = 0; i < n; ++i) {
             // progressiveCell with one reversal of q for all axes: q's bit a * t + c (axis c's bit t from the

@@ -34,12 +34,12 @@ STIPPLE_KERNEL __m512i laineKarras(__m512i x, uint32_t seed) {
 
 STIPPLE_KERNEL __m128i count(uint32_t s) { return _mm_cvtsi32_si128(int(s)); }
 
-// axisJitter of pattern_stratified.cpp (lowbias32 of ((q << 2) | c) ^ seed), given u = t ^ (t >> 16) for
-// t = (q << 2) ^ seed: lowbias32's first step is the same for every axis (c < 4 has no bits at 16 and up).
-STIPPLE_KERNEL __m512i axisJitter(__m512i u, uint32_t c) {
+// axisJitter of pattern_stratified.cpp (lowbias32 of ((s << 2) | c) ^ seed) without its last step x ^= x >> 16,
+// given u = jitterBase(s, seed): lowbias32's first step is the same for every axis. valueOfHead applies the last
+// step.
+STIPPLE_KERNEL __m512i axisJitterHead(__m512i u, uint32_t c) {
     __m512i x = mul32(c ? _mm512_xor_si512(u, _mm512_set1_epi32(int(c))) : u, 0x7feb352du);
-    x = mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
-    return _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+    return mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
 }
 
 // Stores the first `floats` (<= 16) lanes.
@@ -121,10 +121,25 @@ STIPPLE_KERNEL void cells3D(__m512i q, __m512i top[3]) {
     }
 }
 
+// bits / 2^24 as float (bits < 2^24): the conversion is exact, and scaling an exact nonzero float by 2^-24 lowers
+// its exponent field by 24 (no result is subnormal), an integer subtract instead of a multiply's latency.
+STIPPLE_KERNEL __m512 unitOf(__m512i bits) {
+    const __m512i f = _mm512_castps_si512(_mm512_cvtepi32_ps(bits));
+    return _mm512_castsi512_ps(
+        _mm512_mask_sub_epi32(f, _mm512_test_epi32_mask(bits, bits), f, _mm512_set1_epi32(24 << 23)));
+}
+
 // (top & topMask) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
 STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift) {
-    const __m512i bits = _mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea);
-    return _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f));
+    return unitOf(_mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea));
+}
+
+// The same with jitter = x ^ (x >> 16) (lowbias32's last step, axisJitterHead): its shift is (x >> s) ^ (x >> (s +
+// 16)), two parallel shifts and then one three-way operation with the masked cell bits.
+STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m128i jitterShift, __m128i jitterShift16) {
+    const __m512i cell = _mm512_and_si512(top, topMask);
+    return unitOf(_mm512_ternarylogic_epi32(cell, _mm512_srl_epi32(x, jitterShift), _mm512_srl_epi32(x, jitterShift16),
+                                            0xf6)); // a | (b ^ c)
 }
 
 template <uint32_t Arity>
@@ -142,10 +157,11 @@ template <uint32_t Arity>
                           int(0xb0000000u), 0x70000000, int(0xf0000000u)),
         unused);
     __m512i topMask[3];
-    __m128i jitterShift[3];
+    __m128i jitterShift[3], jitterShift16[3];
     for (uint32_t c = 0; c < Arity; ++c) {
         topMask[c] = _mm512_set1_epi32(int(((1u << a.axisBits[c]) - 1u) << (24 - a.axisBits[c])));
         jitterShift[c] = stipple::count(8 + a.axisBits[c]);
+        jitterShift16[c] = stipple::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     for (uint32_t base = 0; base < count; base += 16) {
@@ -170,17 +186,17 @@ template <uint32_t Arity>
                 bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
             store(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
         } else {
-            // u = t ^ (t >> 16) with t = (q << 2) ^ seed is (q << 2) ^ (q >> 14) ^ (seed ^ seed >> 16): one
-            // three-way XOR after two parallel shifts.
-            const __m512i t = _mm512_ternarylogic_epi32(_mm512_slli_epi32(q, 2), _mm512_srli_epi32(q, 14),
+            // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled index
+            // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
+            const __m512i t = _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
                                                         _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))),
                                                         0x96);
             __m512 v[Arity];
             if constexpr (Arity == 2) {
                 __m512i top0, top1;
                 cells2D(q, top0, top1);
-                const __m512 x = valueOf(top0, topMask[0], axisJitter(t, 0), jitterShift[0]);
-                const __m512 y = valueOf(top1, topMask[1], axisJitter(t, 1), jitterShift[1]);
+                const __m512 x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
+                const __m512 y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
                 const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
                 v[0] = _mm512_permutex2var_ps(x, lo, y);
                 v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
@@ -188,7 +204,8 @@ template <uint32_t Arity>
                 __m512i top[3];
                 cells3D(q, top);
                 __m512 axis[3];
-                for (uint32_t c = 0; c < 3; ++c) axis[c] = valueOf(top[c], topMask[c], axisJitter(t, c), jitterShift[c]);
+                for (uint32_t c = 0; c < 3; ++c)
+                    axis[c] = valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
                 // Interleave x, y, z.
                 for (uint32_t w = 0; w < 3; ++w) {
                     const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
