@@ -88,19 +88,26 @@ template <uint32_t Arity>
     const __m512i layersOf[3] = {_mm512_setr_epi32(0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 3, 3, 3, 3),
                                  _mm512_setr_epi32(3, 3, 3, 3, 3, 3, 3, 3, 7, 7, 7, 7, 7, 7, 7, 7),
                                  _mm512_setr_epi32(7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7)};
-    const __m512i seed = _mm512_set1_epi32(int(a.orderSeed));
     // From scalars: a vector load of the just-written arguments would wait for store forwarding to fail.
-    const __m512i source = _mm512_zextsi128_si512(_mm_setr_epi32(int(a.source[0]), int(a.source[1]), int(a.source[2]), 0));
+    const __m512i source =
+        _mm512_zextsi128_si512(_mm_setr_epi32(int(a.source[0]), int(a.source[1]), int(a.source[2]), 0));
     const __m512 shift = _mm512_zextps128_ps512(_mm_setr_ps(a.shift[0], a.shift[1], a.shift[2], 0.0f));
     const __m512 sign = _mm512_zextps128_ps512(_mm_setr_ps(a.sign[0], a.sign[1], a.sign[2], 0.0f));
+    // Stored float 3 (i ^ m) + source[c] of the block for output float (i, c): m = seed & (bit_floor(i) - 1) in
+    // block 0, seed & 15 past it (computed only when such a block is served).
     __m512i firstIndex[3], index[3];
     __m512 shifts[3], signs[3];
     for (uint32_t w = 0; w < 3; ++w) {
         const __m512i axis = _mm512_permutexvar_epi32(axisOf[w], source);
-        firstIndex[w] = _mm512_add_epi32(
-            _mm512_mullo_epi32(_mm512_set1_epi32(3), _mm512_xor_si512(pointOf[w], _mm512_and_si512(seed, layersOf[w]))), axis);
-        index[w] = _mm512_add_epi32(
-            _mm512_mullo_epi32(_mm512_set1_epi32(3), _mm512_xor_si512(pointOf[w], _mm512_set1_epi32(int(a.orderSeed & 15u)))), axis);
+        if (first == 0) {
+            const __m512i i = _mm512_xor_si512(pointOf[w], _mm512_and_si512(_mm512_set1_epi32(int(a.orderSeed)),
+                                                                             layersOf[w]));
+            firstIndex[w] = _mm512_add_epi32(_mm512_add_epi32(_mm512_slli_epi32(i, 1), i), axis);
+        }
+        if (first + count > 16) {
+            const __m512i i = _mm512_xor_si512(pointOf[w], _mm512_set1_epi32(int(a.orderSeed & 15u)));
+            index[w] = _mm512_add_epi32(_mm512_add_epi32(_mm512_slli_epi32(i, 1), i), axis);
+        }
         shifts[w] = _mm512_permutexvar_ps(axisOf[w], shift);
         signs[w] = _mm512_permutexvar_ps(axisOf[w], sign);
     }
@@ -120,7 +127,8 @@ template <uint32_t Arity>
         for (uint32_t w = 0; w < 3 && 16 * w < floats; ++w) {
             const __m512i j = lanes[w];
             const __m512 low = _mm512_permutex2var_ps(r[0], j, r[1]);
-            const __m512 v = _mm512_mask_permutexvar_ps(low, _mm512_cmpge_epi32_mask(j, _mm512_set1_epi32(32)), j, r[2]);
+            const __m512 v =
+                _mm512_mask_permutexvar_ps(low, _mm512_cmpge_epi32_mask(j, _mm512_set1_epi32(32)), j, r[2]);
             const __m512 x = wrapped(signs[w], v, shifts[w]);
             if (floats - 16 * w >= 16)
                 _mm512_storeu_ps(o + 16 * w, x);

@@ -14,11 +14,15 @@ namespace {
 
 #define STIPPLE_KERNEL [[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline
 
+// The byte shuffle that reverses the bytes of every dword.
+STIPPLE_KERNEL __m512i dwordByteReversal() {
+    return _mm512_broadcast_i32x4(_mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+}
+
 // Bit reversal of every 32-bit lane: GFNI reverses the bits of each byte, a byte shuffle the bytes of each dword.
 STIPPLE_KERNEL __m512i reverse32(__m512i v) {
     const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(v, _mm512_set1_epi64(0x8040201008040201ll), 0);
-    return _mm512_shuffle_epi8(bytes,
-                               _mm512_broadcast_i32x4(_mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12)));
+    return _mm512_shuffle_epi8(bytes, dwordByteReversal());
 }
 
 STIPPLE_KERNEL __m512i mul32(__m512i x, uint32_t c) { return _mm512_mullo_epi32(x, _mm512_set1_epi32(int(c))); }
@@ -76,7 +80,7 @@ constexpr int64_t bitMatrix(const int (&from)[8]) {
 }
 // Bytes of every dword reversed (reverse32's shuffle).
 STIPPLE_KERNEL __m512i reverseBytes(__m512i v) {
-    return _mm512_shuffle_epi8(v, _mm512_broadcast_i32x4(_mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12)));
+    return _mm512_shuffle_epi8(v, dwordByteReversal());
 }
 
 // 2D cells of q, as cell[c] << (24 - axisBits[c]) before masking: axis 0 has q's even bits, axis 1 its odd bits,
