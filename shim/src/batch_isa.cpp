@@ -11,7 +11,9 @@ BatchIsa detect() {
 #if defined(STIPPLE_BATCH_ISA_CLONES)
     __builtin_cpu_init(); // needed before __builtin_cpu_supports during static initialisation
     if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
-        __builtin_cpu_supports("avx512bw"))
+        __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512cd") &&
+        __builtin_cpu_supports("avx512vbmi") &&
+        __builtin_cpu_supports("gfni"))
         return BatchIsa::Avx512;
     if (__builtin_cpu_supports("avx2")) return BatchIsa::Avx2;
 #endif

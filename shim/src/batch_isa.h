@@ -24,5 +24,5 @@ void forceBatchIsa(BatchIsa isa);
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define STIPPLE_BATCH_ISA_CLONES 1
 #define STIPPLE_TARGET_AVX2 gnu::target("avx2")
-#define STIPPLE_TARGET_AVX512 gnu::target("avx512f,avx512dq,avx512vl,avx512bw")
+#define STIPPLE_TARGET_AVX512 gnu::target("avx512f,avx512dq,avx512vl,avx512bw,avx512cd,avx512vbmi,gfni")
 #endif

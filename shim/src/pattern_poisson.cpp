@@ -15,6 +15,7 @@
 #include "patterns.h"
 #include "permutation.h"
 #include "pointsets/pointsets.h"
+#include "simd_avx512.h"
 
 #include <algorithm>
 #include <bit>
@@ -38,24 +39,24 @@ constexpr uint8_t kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0
     return r < 1.0f ? r : 0.0f;
 }
 
-struct TorusMap {
-    uint32_t orderSeed;
-    uint8_t source[3] = {0, 1, 2};      // output axis c reads stored axis source[c]
-    float sign[3] = {1.0f, 1.0f, 1.0f}; // -1: reflected axis
-    float shift[3];
+// The fields (orderSeed; source[c], the stored axis output axis c reads; sign[c], -1 for a reflected axis; shift[c])
+// are the AVX-512 kernel's arguments, passed as they are: a copy would read them back wider than they were written,
+// which waits for a failed store forwarding on every call.
+struct TorusMap : PoissonKernelArgs {
 
     // One hash gives the three shifts (21 bits each: multiples of 2^-21), one the symmetry (axis order from its
     // value mod 6, reflections from bits 32..34) and the order seed (bits 35..63).
-    TorusMap(uint64_t key, uint32_t arity, bool useSymmetry) {
+    TorusMap(uint64_t key, uint32_t arity, bool useSymmetry) : PoissonKernelArgs{0, {0, 1, 2}, {1.0f, 1.0f, 1.0f}, {}} {
         const uint64_t shifts = hashAt(key, 3);
-        for (uint32_t c = 0; c < 3; ++c) shift[c] = float((shifts >> (43 - 21 * c)) & 0x1fffffu) * 0x1p-21f;
+        for (uint32_t c = 0; c < arity; ++c) shift[c] = float((shifts >> (43 - 21 * c)) & 0x1fffffu) * 0x1p-21f;
         const uint64_t symmetry = hashAt(key, 2);
         orderSeed = static_cast<uint32_t>(symmetry >> 35);
         if (!useSymmetry) return;
         const uint32_t axisOrder = arity == 3 ? uint32_t(symmetry % 6) : arity == 2 ? uint32_t(symmetry % 2) * 2 : 0;
-        for (uint32_t c = 0; c < 3; ++c) {
+        for (uint32_t c = 0; c < arity; ++c) {
             source[c] = kAxisOrders[axisOrder][c];
-            sign[c] = (symmetry >> (32 + c)) & 1 ? -1.0f : 1.0f;
+            // The sign bit set from the hash bit, not a branch (a coin flip per call, mispredicted half the time).
+            sign[c] = std::bit_cast<float>(0x3f800000u | (static_cast<uint32_t>(symmetry >> (32 + c)) & 1u) << 31);
         }
     }
 
@@ -175,7 +176,11 @@ template <uint32_t Arity>
 void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count, float* out) {
 #if defined(STIPPLE_BATCH_ISA_CLONES)
     switch (batchIsa()) {
-    case BatchIsa::Avx512: return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
+    case BatchIsa::Avx512: {
+        // Power-of-two sets: hand-written (poisson_avx512.cpp).
+        if (poissonLayeredAvx512(map, Arity, stored, points, first, count, out)) return;
+        return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
+    }
     case BatchIsa::Avx2: return serveLayeredAvx2<Arity>(map, stored, points, first, count, out);
     case BatchIsa::Baseline: break;
     }
@@ -183,13 +188,18 @@ void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint3
     serveLayeredBaseline<Arity>(map, stored, points, first, count, out);
 }
 
+// The map built for a known arity: only its axes are computed (the others keep their unused defaults).
+template <uint32_t Arity>
+void fillPoissonOf(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    const TorusMap map(key, Arity, true);
+    serveBatch<Arity>(map, cachedSet(key, dim), dim.setSize, first, count, out);
+}
+
 void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    const TorusMap map(key, dim.arity, true);
-    const float* stored = cachedSet(key, dim);
     switch (dim.arity) {
-    case 1: return serveBatch<1>(map, stored, dim.setSize, first, count, out);
-    case 2: return serveBatch<2>(map, stored, dim.setSize, first, count, out);
-    default: return serveBatch<3>(map, stored, dim.setSize, first, count, out);
+    case 1: return fillPoissonOf<1>(key, dim, first, count, out);
+    case 2: return fillPoissonOf<2>(key, dim, first, count, out);
+    default: return fillPoissonOf<3>(key, dim, first, count, out);
     }
 }
 

@@ -15,6 +15,11 @@
 //    Hence every prefix of 2^j points (and every aligned block of 2^j) holds one point in each cell of the coarse
 //    2^j-cell grid of the first j interleaved bits, uniformly placed in it (progressive jittered sampling). Both
 //    seeds come from the (pixel, dimension, block) key.
+//    The jitter (a value's 24 - axisBits bits below its cell) is a function of the cell alone, so it does not
+//    depend on the order: in 1D the value scramble's own bits above pointBits (V's output before masking: Owen
+//    scrambling's jitter, at no cost), in 2D and 3D a 32-bit finaliser per axis of (S(p), axis), S(p) being the
+//    cell's q before V (axisJitter). Both are 32-bit integer work, which every vector ISA does in one instruction
+//    per step (a 64-bit hash did not).
 //  - other grids (non-power-of-two axes, padded grids): a hashed random permutation of the points (Kensler 2013):
 //    a prefix is a uniformly random subset of the strata.
 // Per (pixel, dimension, block) the key gives the order (rotation or permutation), the padded lines and hole
@@ -27,6 +32,7 @@
 #include "patterns.h"
 #include "permutation.h"
 #include "progressive_strata.h"
+#include "simd_avx512.h"
 
 #include <bit>
 
@@ -38,11 +44,14 @@ struct StratifiedSet {
     uint32_t orderSeed; // index shuffle seed (progressive) or permutation seed
     uint32_t valueSeed; // progressive: the value scramble's seed
     uint64_t jitterKey;
+    uint32_t jitterSeed; // progressive 2D and 3D: seed of the per-axis 32-bit jitter hash
     uint32_t lineSeed = 0, holeOffset = 0; // padded grids only
 
     StratifiedSet(uint64_t key, const StrataGrid& grid)
         : orderSeed(static_cast<uint32_t>(key >> 32)), valueSeed(static_cast<uint32_t>(key)),
-          jitterKey(key ^ 0x6a09e667f3bcc909ull) {
+          jitterKey(key ^ 0x6a09e667f3bcc909ull),
+          // The high half of a 64-bit product depends on every bit of the key, not just on one of the two seeds.
+          jitterSeed(static_cast<uint32_t>((jitterKey * 0xd1342543de82ef95ull) >> 32)) {
         if (!grid.padded()) return;
         lineSeed = static_cast<uint32_t>(hashAt(key, 1) >> 32);
         holeOffset = static_cast<uint32_t>((hashAt(key, 2) >> 32) % grid.lineLength);
@@ -62,6 +71,24 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
     return x;
 }
 
+// The 32-bit jitter word of axis c in 2D and 3D: lowbias32 (Wellons' two-multiply finaliser) of (s, c) keyed by
+// the set's jitter seed, s = S(p) < 2^pointBits the shuffled index (V maps it to the cell's q one to one). 32-bit
+// lane multiplies are one instruction in every vector ISA, the 64-bit finaliser the jitter used before took three
+// 64-bit ones; the value keeps the word's top 24 - axisBits bits, so the cell bits plus the jitter still fill all 24
+// bits of the float. lowbias32's first step, x ^= x >> 16, is the same for every axis (c < 4 has no bits at 16 and
+// up): axisJitter takes its result for c = 0, u = jitterBase(s, seed).
+constexpr uint32_t jitterBase(uint32_t s, uint32_t seed) {
+    const uint32_t t = (s << 2) ^ seed;
+    return t ^ (t >> 16);
+}
+constexpr uint32_t axisJitter(uint32_t u, uint32_t c) {
+    uint32_t x = u ^ c;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16);
+}
+
 // Blue is a template parameter so that the flagless loop is exactly the plain one (no blue-noise code in it).
 template <uint32_t Arity, bool Blue>
 [[gnu::always_inline]] inline void progressivePoint(const StratifiedSet& set, const StrataGrid& grid, uint32_t p,
@@ -73,11 +100,15 @@ template <uint32_t Arity, bool Blue>
         grid.pointBits <= 16
             ? reverseBits16(laineKarras(reverseBits16(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits)
             : reverseBits(laineKarras(reverseBits(p, grid.pointBits), set.orderSeed) & mask, grid.pointBits);
-    const uint32_t q = laineKarras(shuffled, set.valueSeed) & mask;
-    // 1D needs only the top 32 bits: one multiply of the keyed counter carries every input bit into them (and a
-    // uniform key makes them uniform); 2D and 3D also use low bits and take the full finaliser.
-    const uint64_t bits =
-        Arity == 1 ? (set.jitterKey ^ (uint64_t(q) * kGolden64)) * 0xd1342543de82ef95ull : hashAt(set.jitterKey, q);
+    const uint32_t scrambled = laineKarras(shuffled, set.valueSeed);
+    const uint32_t q = scrambled & mask;
+    // The jitter words (a value takes the top 24 - axisBits bits of its axis' word), functions of the cell alone:
+    // 1D: the value scramble's bits at and above pointBits, a hash of q's bits (Owen scrambling's own jitter; LK
+    // carries low bits up, so the top bits mix most): 32 - pointBits >= 24 - axisBits of them, for free. 2D and 3D:
+    // axisJitter per axis of S(p), which V maps to q one to one (the same cell), so the hash does not wait for V.
+    uint32_t jitter[3] = {scrambled, 0, 0};
+    if constexpr (Arity >= 2)
+        for (uint32_t c = 0; c < Arity; ++c) jitter[c] = axisJitter(jitterBase(shuffled, set.jitterSeed), c);
     uint32_t top[3]; // cell[c] << (24 - axisBits[c])
     if (grid.cellTable) {
         const uint32_t* words = grid.cellTable->data() + size_t(q) * Arity;
@@ -92,29 +123,20 @@ template <uint32_t Arity, bool Blue>
         return static_cast<float>(static_cast<int32_t>(topBits | (jitter >> (8 + axisBits)))) * 0x1p-24f;
     };
     if constexpr (Blue) {
-        uint32_t jitter[3] = {static_cast<uint32_t>(bits >> 32), static_cast<uint32_t>(bits), 0};
         uint32_t cell[3] = {0, 0, 0};
         for (uint32_t c = 0; c < Arity; ++c) cell[c] = top[c] >> (24 - grid.axisBits[c]);
-        if constexpr (Arity == 3)
-            for (uint32_t c = 0; c < 3; ++c) jitter[c] = static_cast<uint32_t>(bits >> (43 - 21 * c)) << 11;
         blue->place((uint64_t(cell[2]) << 42) ^ (uint64_t(cell[1]) << 21) ^ cell[0], Arity, jitter);
         for (uint32_t c = 0; c < Arity; ++c) out[c] = value(top[c], grid.axisBits[c], jitter[c]);
         return;
     }
-    if constexpr (Arity <= 2) {
-        out[0] = value(top[0], grid.axisBits[0], static_cast<uint32_t>(bits >> 32));
-        if constexpr (Arity == 2) out[1] = value(top[1], grid.axisBits[1], static_cast<uint32_t>(bits));
-    } else {
-        for (uint32_t c = 0; c < 3; ++c)
-            out[c] = value(top[c], grid.axisBits[c], static_cast<uint32_t>(bits >> (43 - 21 * c)) << 11);
-    }
+    for (uint32_t c = 0; c < Arity; ++c) out[c] = value(top[c], grid.axisBits[c], jitter[c]);
 }
 
 // ---- progressive grids, the batch path ----------------------------------------------------------------------
 //
 // The same values as progressivePoint, computed a chunk of points at a time in three loops the compiler vectorises:
 // 32-bit scrambles (bit reversal by shifts instead of the byte table, the cell by bit compaction instead of the
-// cell table: the same functions), the 64-bit jitter hash, then the floats. Compiled for AVX2 and AVX-512
+// cell table: the same functions), the 32-bit jitter hashes, then the floats. Compiled for AVX2 and AVX-512
 // (batch_isa.h); the baseline ISA runs the per-point code.
 
 [[gnu::always_inline]] inline uint32_t reverse32(uint32_t v) {
@@ -146,14 +168,14 @@ template <uint32_t Arity>
     const uint32_t bits = grid.pointBits;
     const uint32_t mask = (1u << bits) - 1u;
     const uint32_t orderSeed = set.orderSeed, valueSeed = set.valueSeed;
-    const uint64_t jitterKey = set.jitterKey;
+    const uint32_t jitterSeed = set.jitterSeed;
     uint32_t axisBits[3] = {0, 0, 0}, topShift[3] = {0, 0, 0}, jitterShift[3] = {0, 0, 0};
     for (uint32_t c = 0; c < Arity; ++c) {
         axisBits[c] = grid.axisBits[c];
         topShift[c] = 24 - axisBits[c];
         jitterShift[c] = 8 + axisBits[c];
     }
-    alignas(64) uint32_t q[kChunk];
+    alignas(64) uint32_t q[kChunk], cellKey[kChunk]; // cellKey: S(p), what 2D and 3D hash for the jitter
     alignas(64) uint32_t jitter[3][kChunk];
     for (uint32_t base = 0; base < count; base += kChunk) {
         const uint32_t n = count - base < kChunk ? count - base : kChunk;
@@ -165,29 +187,22 @@ template <uint32_t Arity>
             for (uint32_t i = 0; i < kChunk; ++i) {
                 const uint32_t reversed = ((reversedFirst | kReversedLanes.word[i]) >> (31 - bits)) >> 1;
                 const uint32_t shuffled = reverseLow(laineKarras(reversed, orderSeed) & mask, bits);
-                q[i] = laineKarras(shuffled, valueSeed) & mask;
+                cellKey[i] = shuffled;
+                jitter[0][i] = laineKarras(shuffled, valueSeed); // 1D's jitter word (progressivePoint)
+                q[i] = jitter[0][i] & mask;
             }
         } else {
             for (uint32_t i = 0; i < n; ++i) {
                 const uint32_t shuffled =
                     reverseLow(laineKarras(reverseLow(chunkFirst + i, bits), orderSeed) & mask, bits);
-                q[i] = laineKarras(shuffled, valueSeed) & mask;
+                cellKey[i] = shuffled;
+                jitter[0][i] = laineKarras(shuffled, valueSeed);
+                q[i] = jitter[0][i] & mask;
             }
         }
-        for (uint32_t i = 0; i < n; ++i) {
-            if constexpr (Arity == 1) {
-                jitter[0][i] =
-                    static_cast<uint32_t>(((jitterKey ^ (uint64_t(q[i]) * kGolden64)) * 0xd1342543de82ef95ull) >> 32);
-            } else {
-                const uint64_t h = hashAt(jitterKey, q[i]);
-                if constexpr (Arity == 2) {
-                    jitter[0][i] = static_cast<uint32_t>(h >> 32);
-                    jitter[1][i] = static_cast<uint32_t>(h);
-                } else {
-                    for (uint32_t c = 0; c < 3; ++c) jitter[c][i] = static_cast<uint32_t>(h >> (43 - 21 * c)) << 11;
-                }
-            }
-        }
+        if constexpr (Arity >= 2)
+            for (uint32_t c = 0; c < Arity; ++c)
+                for (uint32_t i = 0; i < n; ++i) jitter[c][i] = axisJitter(jitterBase(cellKey[i], jitterSeed), c);
         float* o = out + size_t(base) * Arity;
         for (uint32_t i = 0; i < n; ++i) {
             // progressiveCell with one reversal of q for all axes: q's bit a * t + c (axis c's bit t from the
@@ -219,10 +234,13 @@ template <uint32_t Arity>
                                                   uint32_t count, float* out) {
     progressiveChunks<Arity>(set, grid, first, count, out);
 }
+// AVX-512: hand-written (stratified_avx512.cpp).
 template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
-                                                      uint32_t count, float* out) {
-    progressiveChunks<Arity>(set, grid, first, count, out);
+void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
+                            float* out) {
+    const ProgressiveKernelArgs args{set.orderSeed, set.valueSeed, set.jitterSeed, grid.pointBits,
+                                     {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
+    progressiveAvx512(args, Arity, first, count, out);
 }
 #endif
 

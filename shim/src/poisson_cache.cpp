@@ -20,9 +20,8 @@ uint64_t PoissonFamily::setSeed(uint32_t arity, uint32_t points, uint32_t j) {
     return hashCombine(key, j);
 }
 
-const float* PoissonFamily::set(uint32_t j) const {
+const float* PoissonFamily::generate(uint32_t j) const {
     Slot& slot = slots_[j];
-    if (const float* data = slot.ready.load(std::memory_order_acquire)) return data;
     std::lock_guard<std::mutex> lock(slot.mutex);
     if (const float* data = slot.ready.load(std::memory_order_relaxed)) return data;
     std::vector<float> points = pointsets::generatePoisson(int(arity_), points_, setSeed(arity_, points_, j));

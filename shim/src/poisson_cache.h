@@ -30,14 +30,19 @@ public:
     uint32_t setCount() const { return setCount_; }
     size_t byteCapacity() const { return size_t(setCount_) * points_ * arity_ * sizeof(float); }
 
-    // Set j (0 <= j < setCount), M*arity floats in [0,1). Generates it on first use; safe from any thread.
-    const float* set(uint32_t j) const;
+    // Set j (0 <= j < setCount), M*arity floats in [0,1). Generates it on first use; safe from any thread. The
+    // generated case is inline: it is part of every poisson call.
+    const float* set(uint32_t j) const {
+        if (const float* data = slots_[j].ready.load(std::memory_order_acquire)) return data;
+        return generate(j);
+    }
     bool generated(uint32_t j) const { return slots_[j].ready.load(std::memory_order_acquire) != nullptr; }
 
     // The seed set j is generated from: a function of (arity, M, j) only.
     static uint64_t setSeed(uint32_t arity, uint32_t points, uint32_t j);
 
 private:
+    const float* generate(uint32_t j) const;
     struct Slot {
         std::mutex mutex;
         std::atomic<const float*> ready{nullptr};

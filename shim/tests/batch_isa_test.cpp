@@ -2,7 +2,7 @@
 // For every variant this CPU runs (baseline, AVX2, AVX-512), forced in turn: fill_pixel equals sample at every
 // index and stream_fill equals stream, for independent, stratified, poisson and sobol, arity 1..3, N from 1 to 2^18
 // (progressive grids with and without the cell table, padded grids), k = 1 and 3, runs that start on and off
-// the kernels' 64-point chunks and cross blocks.
+// the kernels' 64-point chunks and 16-float vectors, end mid-vector and cross blocks.
 #define BOOST_TEST_MODULE batch_isa
 #include <boost/test/unit_test.hpp>
 
@@ -64,6 +64,16 @@ void checkPattern(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
     BOOST_REQUIRE(stipple_sampler_stream_fill(s, 2, 3, first, count, 11, arity, run.data(), run.size()) == STIPPLE_OK);
     for (uint32_t j = 0; j < count; j += (count > 400 ? 7 : 1)) {
         BOOST_REQUIRE(stipple_sampler_stream(s, 2, 3, first + j, 11, arity, one.data(), arity) == STIPPLE_OK);
+        mismatches += !sameBits(one.data(), run.data() + size_t(j) * arity, arity);
+    }
+    // A run from a position on the 16-float grid but not 0 (the AVX-512 kernels' aligned blocks past the first)
+    // ending mid-vector: 2D reads 8-point blocks, 1D 16-point ones.
+    const uint32_t alignedFirst = n >= 64 ? 32 : n >= 16 ? 8 : 0;
+    const uint32_t alignedCount = n - alignedFirst > 5 ? n - alignedFirst - 5 : 1;
+    BOOST_REQUIRE(stipple_sampler_stream_fill(s, 4, 1, alignedFirst, alignedCount, 12, arity, run.data(),
+                                              size_t(alignedCount) * arity) == STIPPLE_OK);
+    for (uint32_t j = 0; j < alignedCount; j += (alignedCount > 400 ? 7 : 1)) {
+        BOOST_REQUIRE(stipple_sampler_stream(s, 4, 1, alignedFirst + j, 12, arity, one.data(), arity) == STIPPLE_OK);
         mismatches += !sameBits(one.data(), run.data() + size_t(j) * arity, arity);
     }
     BOOST_CHECK_MESSAGE(mismatches == 0, "pattern " << pattern << " N " << n << " arity " << arity << " k " << k << ": "

@@ -1,0 +1,236 @@
+// stratified_avx512.cpp — the progressive stratified batch (pattern_stratified.cpp, progressiveChunks) with AVX-512
+// and GFNI intrinsics, 16 points per step: the same values, computed as progressivePoint does (simd_avx512.h).
+#include "batch_isa.h"
+#include "hash.h"
+#include "progressive_strata.h"
+#include "simd_avx512.h"
+
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+#include <immintrin.h>
+
+namespace stipple {
+
+namespace {
+
+#define STIPPLE_KERNEL [[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline
+
+// The byte shuffle that reverses the bytes of every dword.
+STIPPLE_KERNEL __m512i dwordByteReversal() {
+    return _mm512_broadcast_i32x4(_mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+}
+
+// Bit reversal of every 32-bit lane: GFNI reverses the bits of each byte, a byte shuffle the bytes of each dword.
+STIPPLE_KERNEL __m512i reverse32(__m512i v) {
+    const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(v, _mm512_set1_epi64(0x8040201008040201ll), 0);
+    return _mm512_shuffle_epi8(bytes, dwordByteReversal());
+}
+
+STIPPLE_KERNEL __m512i mul32(__m512i x, uint32_t c) { return _mm512_mullo_epi32(x, _mm512_set1_epi32(int(c))); }
+
+// laineKarras of pattern_stratified.cpp, per lane.
+STIPPLE_KERNEL __m512i laineKarras(__m512i x, uint32_t seed) {
+    x = _mm512_xor_si512(x, mul32(x, 0x3d20adeau));
+    x = _mm512_add_epi32(x, _mm512_set1_epi32(int(seed)));
+    x = mul32(x, (seed >> 16) | 1u);
+    x = _mm512_xor_si512(x, mul32(x, 0x05526c56u));
+    return _mm512_xor_si512(x, mul32(x, 0x53a22864u));
+}
+
+STIPPLE_KERNEL __m128i count(uint32_t s) { return _mm_cvtsi32_si128(int(s)); }
+
+// axisJitter of pattern_stratified.cpp (lowbias32 of ((s << 2) | c) ^ seed) without its last step x ^= x >> 16,
+// given u = jitterBase(s, seed): lowbias32's first step is the same for every axis. valueOfHead applies the last
+// step.
+STIPPLE_KERNEL __m512i axisJitterHead(__m512i u, uint32_t c) {
+    __m512i x = mul32(c ? _mm512_xor_si512(u, _mm512_set1_epi32(int(c))) : u, 0x7feb352du);
+    return mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
+}
+
+// Stores the first `floats` (<= 16) lanes.
+STIPPLE_KERNEL void store(float* out, __m512 v, uint32_t floats) {
+    if (floats >= 16)
+        _mm512_storeu_ps(out, v);
+    else
+        _mm512_mask_storeu_ps(out, __mmask16((1u << floats) - 1u), v);
+}
+
+// Lane indices that interleave three 16-lane axes into 48 floats (float f is axis f % 3 of point f / 3): the
+// first permute takes x or y, the second keeps that or takes z.
+struct Interleave3 {
+    alignas(64) int32_t xy[3][16];
+    alignas(64) int32_t z[3][16];
+    constexpr Interleave3() : xy(), z() {
+        for (int w = 0; w < 3; ++w)
+            for (int l = 0; l < 16; ++l) {
+                const int f = 16 * w + l, point = f / 3, c = f % 3;
+                xy[w][l] = (c == 1 ? 16 : 0) + point;
+                z[w][l] = c == 2 ? 16 + point : l;
+            }
+    }
+};
+inline constexpr Interleave3 kInterleave3{};
+
+// The GF(2) affine matrix that sets bit i of every byte to bit from[i] (gf2p8affine: result bit i is the parity of
+// byte 7 - i of the matrix ANDed with the input byte); from[i] < 0 leaves bit i zero.
+constexpr int64_t bitMatrix(const int (&from)[8]) {
+    uint64_t m = 0;
+    for (int i = 0; i < 8; ++i)
+        if (from[i] >= 0) m |= uint64_t(1) << (8 * (7 - i) + from[i]);
+    return int64_t(m);
+}
+// Bytes of every dword reversed (reverse32's shuffle).
+STIPPLE_KERNEL __m512i reverseBytes(__m512i v) {
+    return _mm512_shuffle_epi8(v, dwordByteReversal());
+}
+
+// 2D cells of q, as cell[c] << (24 - axisBits[c]) before masking: axis 0 has q's even bits, axis 1 its odd bits,
+// each read from bit 0 as the cell's most significant bit (progressiveCell). With q's bytes reversed in every dword,
+// one affine per axis puts the axis' four bits of each byte, in cell order, in both nibbles; a byte of the cell is
+// then the 8 bits straddling two such bytes, which a multishift picks (into bits 8..23 of each dword).
+STIPPLE_KERNEL void cells2D(__m512i q, __m512i& x, __m512i& y) {
+    const __m512i bytes = reverseBytes(q);
+    constexpr int64_t even = bitMatrix({6, 4, 2, 0, 6, 4, 2, 0}), odd = bitMatrix({7, 5, 3, 1, 7, 5, 3, 1});
+    // Window offsets: dword byte 1 <- its bits 4..11, byte 2 <- bits 20..27; bytes 0 and 3 are masked to zero.
+    const __m512i windows = _mm512_set1_epi64(int64_t(0x0034240000140400ull));
+    constexpr __mmask64 middle = 0x6666666666666666ull;
+    x = _mm512_maskz_multishift_epi64_epi8(middle, windows,
+                                           _mm512_gf2p8affine_epi64_epi8(bytes, _mm512_set1_epi64(even), 0));
+    y = _mm512_maskz_multishift_epi64_epi8(middle, windows,
+                                           _mm512_gf2p8affine_epi64_epi8(bytes, _mm512_set1_epi64(odd), 0));
+}
+
+// 3D cells of q, as cell[c] << (24 - axisBits[c]) before masking: axis c's bit t from the top is q's bit 3t + c.
+// A 6-bit chunk k of q (bits 6k..6k+5) holds bits t = 2k, 2k + 1 of every axis. A multishift puts chunk k in byte
+// 3 - k of its dword, a 64-entry byte table (one VBMI permute per axis) maps it to the axis' two bits (t = 2k in
+// bit 1), and one multiply by 2^6 + 2^12 + 2^18 + 2^24 moves byte 3 - k's field to bits 31 - 2k and 30 - 2k: the
+// other partial products land on disjoint bits below or past bit 31, so nothing carries into the top byte.
+struct ChunkAxes {
+    alignas(64) uint8_t table[3][64];
+    constexpr ChunkAxes() : table() {
+        for (uint32_t c = 0; c < 3; ++c)
+            for (uint32_t x = 0; x < 64; ++x) table[c][x] = uint8_t((((x >> c) & 1u) << 1) | ((x >> (c + 3)) & 1u));
+    }
+};
+inline constexpr ChunkAxes kChunkAxes{};
+
+STIPPLE_KERNEL void cells3D(__m512i q, __m512i top[3]) {
+    // Byte 3 - k of each dword <- bits 6k.. of the dword (the permute reads the low 6 bits of a byte).
+    const __m512i chunks = _mm512_multishift_epi64_epi8(_mm512_set1_epi64(int64_t(0x20262c3200060c12ull)), q);
+    // One multiply, not the shifts and adds a compiler would make of it.
+    __m512i spread = _mm512_set1_epi32((1 << 6) | (1 << 12) | (1 << 18) | (1 << 24));
+    asm("" : "+v"(spread));
+    for (uint32_t c = 0; c < 3; ++c) {
+        const __m512i fields = _mm512_permutexvar_epi8(chunks, _mm512_load_si512(kChunkAxes.table[c]));
+        top[c] = _mm512_srli_epi32(_mm512_mullo_epi32(fields, spread), 8);
+    }
+}
+
+// bits / 2^24 as float (bits < 2^24): the conversion is exact, and scaling an exact nonzero float by 2^-24 lowers
+// its exponent field by 24 (no result is subnormal), an integer subtract instead of a multiply's latency.
+STIPPLE_KERNEL __m512 unitOf(__m512i bits) {
+    const __m512i f = _mm512_castps_si512(_mm512_cvtepi32_ps(bits));
+    return _mm512_castsi512_ps(
+        _mm512_mask_sub_epi32(f, _mm512_test_epi32_mask(bits, bits), f, _mm512_set1_epi32(24 << 23)));
+}
+
+// (top & topMask) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
+STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift) {
+    return unitOf(_mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea));
+}
+
+// The same with jitter = x ^ (x >> 16) (lowbias32's last step, axisJitterHead): its shift is (x >> s) ^ (x >> (s +
+// 16)), two parallel shifts and then one three-way operation with the masked cell bits.
+STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m128i jitterShift, __m128i jitterShift16) {
+    const __m512i cell = _mm512_and_si512(top, topMask);
+    return unitOf(_mm512_ternarylogic_epi32(cell, _mm512_srl_epi32(x, jitterShift), _mm512_srl_epi32(x, jitterShift16),
+                                            0xf6)); // a | (b ^ c)
+}
+
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, uint32_t first, uint32_t count,
+                                           float* out) {
+    const uint32_t bits = a.pointBits;
+    const __m512i mask = _mm512_set1_epi32(int((1u << bits) - 1u));
+    const __m128i unused = stipple::count(32 - bits); // >= 32 shifts to 0, as reverseBits(v, 0) is 0
+    const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    // reverseBits(p, bits) of an aligned block p = b + i (16 | b, i < 16 <= 2^bits) is reverseBits(b) | that of i.
+    // (A constant: computing it would sit on the path of a one-block call.)
+    const __m512i reversedLanes = _mm512_srl_epi32(
+        _mm512_setr_epi32(0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u), 0x60000000,
+                          int(0xe0000000u), 0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u), 0x30000000,
+                          int(0xb0000000u), 0x70000000, int(0xf0000000u)),
+        unused);
+    __m512i topMask[3];
+    __m128i jitterShift[3], jitterShift16[3];
+    for (uint32_t c = 0; c < Arity; ++c) {
+        topMask[c] = _mm512_set1_epi32(int(((1u << a.axisBits[c]) - 1u) << (24 - a.axisBits[c])));
+        jitterShift[c] = stipple::count(8 + a.axisBits[c]);
+        jitterShift16[c] = stipple::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
+    }
+    const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
+    for (uint32_t base = 0; base < count; base += 16) {
+        const uint32_t blockFirst = first + base;
+        // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
+        // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
+        const __m512i reversed =
+            blockFirst == 0 && bits >= 4 ? reversedLanes
+            : blockFirst % 16 == 0 && bits >= 4
+                ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
+                : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
+        const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, orderSeed)), unused);
+        const __m512i scrambled = laineKarras(shuffled, valueSeed);
+        const __m512i q = _mm512_and_si512(scrambled, mask);
+        const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
+        float* o = out + size_t(base) * Arity;
+        if constexpr (Arity == 1) {
+            // The jitter word is the unmasked scramble (progressivePoint).
+            // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
+            const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
+            const __m512i top = _mm512_shuffle_epi8(
+                bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
+            store(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
+        } else {
+            // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled index
+            // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
+            const __m512i t = _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
+                                                        _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))),
+                                                        0x96);
+            __m512 v[Arity];
+            if constexpr (Arity == 2) {
+                __m512i top0, top1;
+                cells2D(q, top0, top1);
+                const __m512 x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
+                const __m512 y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
+                v[0] = _mm512_permutex2var_ps(x, lo, y);
+                v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
+            } else {
+                __m512i top[3];
+                cells3D(q, top);
+                __m512 axis[3];
+                for (uint32_t c = 0; c < 3; ++c)
+                    axis[c] = valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
+                // Interleave x, y, z.
+                for (uint32_t w = 0; w < 3; ++w) {
+                    const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
+                    v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
+                }
+            }
+            for (uint32_t w = 0; w < Arity; ++w)
+                if (floats > 16 * w) store(o + 16 * w, v[w], floats - 16 * w);
+        }
+    }
+}
+
+} // namespace
+
+void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32_t first, uint32_t count, float* out) {
+    switch (arity) {
+    case 1: return progressive<1>(args, first, count, out);
+    case 2: return progressive<2>(args, first, count, out);
+    default: return progressive<3>(args, first, count, out);
+    }
+}
+
+} // namespace stipple
+#endif
