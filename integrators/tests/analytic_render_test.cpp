@@ -4,13 +4,15 @@
 //  - a square light over a diffuse plane -> the closed-form radiance albedo * L * F, direct integrator.
 // Pass when |mean - expected| <= z * sigma + bias, where sigma bounds the standard deviation of the image mean
 // (from per-pixel variances), z is the two-sided normal quantile for alpha = 0.01 Sidak-corrected over the 11
-// renders here, and bias is the stated deterministic allowance (0 for the sphere; 0.3% for the plane, whose
-// pixels see a patch 0.06 wide over which the exact radiance varies by less than 0.1%).
+// renders here, and bias is the stated deterministic allowance (0 for the sphere; float32 rounding for the
+// truncated sphere, whose every path has the same value; 0.3% for the plane, whose pixels see a patch 0.06 wide
+// over which the exact radiance varies by less than 0.1%).
 #define BOOST_TEST_MODULE analytic_render
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
 
+#include <iomanip>
 #include <iterator>
 
 using namespace stipple::render;
@@ -39,7 +41,11 @@ BOOST_AUTO_TEST_CASE(furnace_sphere_is_one_for_every_pattern) {
 }
 
 BOOST_AUTO_TEST_CASE(furnace_sphere_truncated_depth_matches_geometric_sum) {
-    // max_depth 2 (no Russian roulette before bounce 3): 0.5 * (1 + 0.5 + 0.25) = 0.875.
+    // max_depth 2 (no Russian roulette before bounce 3): 0.5 * (1 + 0.5 + 0.25) = 0.875 for every path, so sigma
+    // is only the spread of float32 rounding and the mean may sit a few ulps off 0.875 whatever the samples: a
+    // path's value is a chain of ~20 float operations (hit point, frame, cosine, BSDF value over pdf per bounce),
+    // each rounded by up to half an ulp, and for a constant integrand those roundings need not cancel. Allowance:
+    // 32 ulps of float32 (2^-19, 1.9e-6 relative).
     auto scene = Scene::load(scenePath("furnace-sphere.yaml"));
     RenderOptions o;
     o.maxDepth = 2;
@@ -47,7 +53,9 @@ BOOST_AUTO_TEST_CASE(furnace_sphere_truncated_depth_matches_geometric_sum) {
     RenderResult r = scene->render(o);
     ImageEstimate e = estimate(r);
     double sigma = std::sqrt(e.variance);
-    BOOST_TEST(std::abs(e.mean - 0.875) <= sidakZ(0.01, kTests) * sigma, "mean " << e.mean << " sigma " << sigma);
+    constexpr double kFloatRounding = 0x1p-19 * 0.875;
+    BOOST_TEST(std::abs(e.mean - 0.875) <= sidakZ(0.01, kTests) * sigma + kFloatRounding,
+               std::setprecision(9) << "mean " << e.mean << " sigma " << sigma);
 }
 
 namespace {
