@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include <cerrno>
 #include <fcntl.h>
@@ -51,7 +52,7 @@ std::string plotNumber(double v) { return std::isfinite(v) ? fmt("%.17g", v) : s
 
 bool writePlots(const std::string& dir, const ReportInputs& in) {
     const Matrix& m = *in.matrix;
-    fs::create_directories(fs::path(dir) / "plots");
+    fs::create_directory(fs::path(dir) / "plots"); // never its parent: see writeReport
     std::string script;
     for (const auto& scene : m.scenes) {
         const std::string base = safeName(scene.name);
@@ -296,7 +297,10 @@ std::string scenesTableHtml(const Results& r) {
 bool writeReport(const std::string& dir, const ReportInputs& in) {
     const Matrix& m = *in.matrix;
     const Results& r = *in.results;
-    fs::create_directories(dir);
+    // dir is the run's staging folder (report_publish.h), made when the run started. Nothing here creates it (or
+    // any parent) again: after a SIGTERM the cleanup thread removes it while this thread may still be writing,
+    // and a folder brought back then would outlive the process.
+    if (!fs::is_directory(dir)) throw std::runtime_error("the report folder " + dir + " is gone");
     writeResultsCsv((fs::path(dir) / "results.csv").string(), r.rows);
     writeCellsCsv((fs::path(dir) / "cells.csv").string(), in.cells);
     writeResultsJson((fs::path(dir) / "results.json").string(), r, in.cells, in.slopes, outcomesJson(in.outcomes));

@@ -42,7 +42,7 @@ void writeCrop(const std::string& reportDir, const std::string& scene, const std
                const render::Image& image, const CropSettings& crop) {
     int size = std::min({crop.size, image.width, image.height});
     int x = int(crop.x * image.width) - size / 2, y = int(crop.y * image.height) - size / 2;
-    fs::create_directories(fs::path(reportDir) / "crops");
+    fs::create_directory(fs::path(reportDir) / "crops"); // never its parent: see writeReport
     render::writePng((fs::path(reportDir) / cropFile(scene, column)).string(),
                      cropImage(image, x, y, size, size, crop.scale));
 }
@@ -93,7 +93,7 @@ void writeRegionCrops(const std::string& reportDir, const MatrixScene& scene, co
                       const render::Image& image) {
     for (const Region& region : scene.regions) {
         const int scale = regionCropScale(pixelRect(region, image.width, image.height));
-        fs::create_directories(fs::path(reportDir) / "crops");
+        fs::create_directory(fs::path(reportDir) / "crops"); // never its parent: see writeReport
         render::writePng((fs::path(reportDir) / regionCropFile(scene.name, region.name, column)).string(),
                          regionImage(image, region, scale));
     }

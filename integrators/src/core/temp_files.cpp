@@ -3,6 +3,7 @@
 #include <stipple/render/publish_journal.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <cerrno>
 #include <csignal>
@@ -64,9 +65,18 @@ void cleanupThread() {
     std::lock_guard hold(holdMutex());
     {
         std::lock_guard lock(registryMutex());
-        for (const std::string& p : registry()) {
-            std::error_code ec;
-            fs::remove_all(p, ec);
+        // The other threads run on while this one cleans up: a writer may add a file to a temporary folder after
+        // remove_all listed it (remove_all then fails with "directory not empty"), or create_directories may bring
+        // a removed folder back. So remove until a pass finds nothing, twice over (~1 ms apart), before dying.
+        for (int attempt = 0, clean = 0; attempt < 200 && clean < 2; ++attempt) {
+            bool left = false;
+            for (const std::string& p : registry()) {
+                std::error_code ec;
+                fs::remove_all(p, ec);
+                left = left || fs::exists(p, ec);
+            }
+            clean = left ? 0 : clean + 1;
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
         registry().clear();
     }
