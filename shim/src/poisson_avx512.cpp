@@ -8,13 +8,7 @@
 #include "simd_avx512.h"
 
 #if defined(STIPPLE_BATCH_ISA_CLONES)
-// GCC 12's AVX-512 headers start some intrinsics from _mm512_undefined_*(), which -W(maybe-)uninitialized reports
-// once inlined (GCC bug 105593, fixed in GCC 13): silenced in the kernels' own files only.
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 13
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#endif
-#include <immintrin.h>
+#include "avx512_intrinsics.h"
 
 #include <bit>
 

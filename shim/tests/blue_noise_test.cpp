@@ -24,21 +24,6 @@ using namespace stipple::test;
 
 namespace {
 
-SamplerPtr makeFlagged(uint32_t pattern, uint32_t n, uint64_t seed, uint32_t arity, uint32_t flags) {
-    stipple_dimension_desc d = toDesc({arity, 1});
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = 1;
-    desc.seed = seed;
-    desc.dimensions = &d;
-    desc.flags = flags;
-    stipple_sampler s = nullptr;
-    BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK, stipple_last_error_message());
-    return SamplerPtr(s);
-}
-
 constexpr uint32_t kBlue = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
 
 } // namespace

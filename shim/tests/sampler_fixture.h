@@ -32,7 +32,8 @@ struct SamplerDeleter {
 };
 using SamplerPtr = std::unique_ptr<stipple_sampler_t, SamplerDeleter>;
 
-inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const std::vector<DimensionSpec>& dims) {
+inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const std::vector<DimensionSpec>& dims,
+                              uint32_t flags = 0) {
     std::vector<stipple_dimension_desc> descs;
     for (const auto& d : dims) descs.push_back(toDesc(d));
     stipple_sampler_desc desc{};
@@ -42,10 +43,16 @@ inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const
     desc.dimension_count = static_cast<uint32_t>(descs.size());
     desc.seed = seed;
     desc.dimensions = descs.data();
+    desc.flags = flags;
     stipple_sampler s = nullptr;
     const stipple_status status = stipple_sampler_create(&desc, &s);
     BOOST_REQUIRE_MESSAGE(status == STIPPLE_OK, "stipple_sampler_create: " << stipple_last_error_message());
     return SamplerPtr(s);
+}
+
+// One dimension of `arity` (one point per sample), created with `flags`.
+inline SamplerPtr makeFlagged(uint32_t pattern, uint32_t n, uint64_t seed, uint32_t arity, uint32_t flags) {
+    return makeSampler(pattern, n, seed, {{arity, 1}}, flags);
 }
 
 inline uint32_t floatsPerPixel(stipple_sampler s, uint32_t dimension) {

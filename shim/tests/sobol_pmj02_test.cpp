@@ -42,21 +42,6 @@ std::vector<FixedPoint2> xyOf(const std::vector<float>& values, uint32_t arity) 
 // The largest j with 2^j <= m.
 uint32_t floorLog2(uint32_t m) { return 31 - static_cast<uint32_t>(__builtin_clz(m)); }
 
-SamplerPtr makeFlagged(uint32_t pattern, uint32_t n, uint64_t seed, uint32_t arity, uint32_t flags) {
-    stipple_dimension_desc d = toDesc({arity, 1});
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = 1;
-    desc.seed = seed;
-    desc.dimensions = &d;
-    desc.flags = flags;
-    stipple_sampler s = nullptr;
-    BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK, stipple_last_error_message());
-    return SamplerPtr(s);
-}
-
 } // namespace
 
 BOOST_AUTO_TEST_CASE(generator_prefixes_are_elementary_nets) {
