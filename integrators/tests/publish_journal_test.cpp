@@ -14,6 +14,7 @@
 #include <functional>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -53,6 +54,13 @@ struct Folder {
     }
     std::string exr() const { return (dir / "img.exr").string(); }
     std::string png() const { return (dir / "img.png").string(); }
+    // The new pair written to temporaries beside the old one, as the renderer stages it; the renames to publish it.
+    std::vector<PendingRename> stageNewPair() const {
+        const std::vector<PendingRename> renames{{tempPathBeside(exr()), exr()}, {tempPathBeside(png()), png()}};
+        std::ofstream(renames[0].temp) << "new exr";
+        std::ofstream(renames[1].temp) << "new png";
+        return renames;
+    }
 };
 
 // Runs `interrupted` in a child that writes the new pair to temporaries and then ends with _exit: no
@@ -61,11 +69,7 @@ void inDeadChild(const Folder& f, const std::function<void(const std::vector<Pen
     const pid_t pid = fork();
     BOOST_REQUIRE(pid >= 0);
     if (pid == 0) {
-        const std::vector<PendingRename> renames{{tempPathBeside(f.exr()), f.exr()},
-                                                 {tempPathBeside(f.png()), f.png()}};
-        std::ofstream(renames[0].temp) << "new exr";
-        std::ofstream(renames[1].temp) << "new png";
-        interrupted(renames);
+        interrupted(f.stageNewPair());
         _exit(0);
     }
     int status = 0;
@@ -135,9 +139,7 @@ BOOST_AUTO_TEST_CASE(a_lost_temporary_leaves_no_mismatched_pair) {
 
 BOOST_AUTO_TEST_CASE(a_live_process_journal_is_left_alone) {
     Folder f("live");
-    const std::vector<PendingRename> r{{tempPathBeside(f.exr()), f.exr()}, {tempPathBeside(f.png()), f.png()}};
-    std::ofstream(r[0].temp) << "new exr";
-    std::ofstream(r[1].temp) << "new png";
+    const std::vector<PendingRename> r = f.stageNewPair();
     const std::string journal = writePublishJournal(r);
     sweepStaleTemps(f.dir.string());
     BOOST_TEST(fs::exists(journal));
@@ -164,9 +166,7 @@ BOOST_AUTO_TEST_CASE(a_journal_naming_other_folders_is_not_followed) {
 
 BOOST_AUTO_TEST_CASE(rename_together_publishes_both_and_leaves_no_journal) {
     Folder f("normal");
-    const std::vector<PendingRename> r{{tempPathBeside(f.exr()), f.exr()}, {tempPathBeside(f.png()), f.png()}};
-    std::ofstream(r[0].temp) << "new exr";
-    std::ofstream(r[1].temp) << "new png";
+    const std::vector<PendingRename> r = f.stageNewPair();
     renameTogether(r);
     BOOST_TEST(f.read("img.exr") == "new exr");
     BOOST_TEST(f.read("img.png") == "new png");
