@@ -5,8 +5,24 @@
 // only the kernel files include this.
 #pragma once
 
+#include "batch_isa.h"
+
+#include <cstdint>
+
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 13
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
 #include <immintrin.h>
+
+namespace stipple {
+
+// Stores the first `floats` (<= 16) lanes of v: whole, or masked for a block's tail.
+[[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline void storeFirst(float* out, __m512 v, uint32_t floats) {
+    if (floats >= 16)
+        _mm512_storeu_ps(out, v);
+    else
+        _mm512_mask_storeu_ps(out, __mmask16((1u << floats) - 1u), v);
+}
+
+} // namespace stipple

@@ -65,10 +65,7 @@ template <uint32_t Arity>
         const __m512 r = wrapped(sign, v, shift);
         const uint32_t floats = (count - base < P ? count - base : P) * Arity;
         float* o = out + size_t(base) * Arity;
-        if (floats == 16)
-            _mm512_storeu_ps(o, r);
-        else
-            _mm512_mask_storeu_ps(o, __mmask16((1u << floats) - 1u), r);
+        storeFirst(o, r, floats);
     }
 }
 
@@ -130,10 +127,7 @@ template <uint32_t Arity>
             const __m512 v =
                 _mm512_mask_permutexvar_ps(low, _mm512_cmpge_epi32_mask(j, _mm512_set1_epi32(32)), j, r[2]);
             const __m512 x = wrapped(signs[w], v, shifts[w]);
-            if (floats - 16 * w >= 16)
-                _mm512_storeu_ps(o + 16 * w, x);
-            else
-                _mm512_mask_storeu_ps(o + 16 * w, __mmask16((1u << (floats - 16 * w)) - 1u), x);
+            storeFirst(o + 16 * w, x, floats - 16 * w);
         }
     }
 }

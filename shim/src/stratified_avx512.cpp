@@ -46,14 +46,6 @@ STIPPLE_KERNEL __m512i axisJitterHead(__m512i u, uint32_t c) {
     return mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
 }
 
-// Stores the first `floats` (<= 16) lanes.
-STIPPLE_KERNEL void store(float* out, __m512 v, uint32_t floats) {
-    if (floats >= 16)
-        _mm512_storeu_ps(out, v);
-    else
-        _mm512_mask_storeu_ps(out, __mmask16((1u << floats) - 1u), v);
-}
-
 // Lane indices that interleave three 16-lane axes into 48 floats (float f is axis f % 3 of point f / 3): the
 // first permute takes x or y, the second keeps that or takes z.
 struct Interleave3 {
@@ -188,7 +180,7 @@ template <uint32_t Arity>
             const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
             const __m512i top = _mm512_shuffle_epi8(
                 bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
-            store(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
+            storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
         } else {
             // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled index
             // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
@@ -217,7 +209,7 @@ template <uint32_t Arity>
                 }
             }
             for (uint32_t w = 0; w < Arity; ++w)
-                if (floats > 16 * w) store(o + 16 * w, v[w], floats - 16 * w);
+                if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
         }
     }
 }
