@@ -23,8 +23,8 @@ appended_to_api_table() {
   local changes old offsets
   changes="$(echo "$1" | sed -n '/function with some indirect sub-type change/,$p')"
   [ "$(echo "$changes" | grep -c "^  \[C\]")" = 1 ] || return 1
-  echo "$changes" | grep -q "^  \[C\] 'function stipple_status stipple_get_api" || return 1
-  echo "$changes" | grep -q "underlying type 'struct stipple_api' changed" || return 1
+  grep -q "^  \[C\] 'function stipple_status stipple_get_api" <<< "$changes" || return 1
+  grep -q "underlying type 'struct stipple_api' changed" <<< "$changes" || return 1
   if echo "$changes" | grep -E -q "deletion|offset changed|changed offset|type of '|name of '|removed|underlying type 'struct [a-z_]+' changed" \
      && echo "$changes" | grep -E "deletion|offset changed|changed offset|type of '|name of '|removed|underlying type 'struct [a-z_]+' changed" \
         | grep -v -q "underlying type 'struct stipple_api' changed"; then

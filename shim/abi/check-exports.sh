@@ -10,9 +10,10 @@ echo "exported symbols:"; echo "$defined" | sed 's/^/  /'
 stray="$(echo "$defined" | grep -v -E '^(stipple_[a-z_]+|STIPPLE_1\.[0-9]+)$' || true)"
 if [ -n "$stray" ]; then echo "FAIL: symbols outside stipple_*:"; echo "$stray"; status=1; fi
 declared=0
+# Here-strings, not pipes: under pipefail, grep -q exiting at its match can fail the writer with SIGPIPE.
 for fn in $(grep -o -E 'STIPPLE_API [^(]*\b(stipple_[a-z_]+)\(' "$header" | grep -o -E 'stipple_[a-z_]+\($' | tr -d '('); do
   declared=$((declared + 1))
-  if ! echo "$defined" | grep -qx "$fn"; then echo "FAIL: $fn is declared in the header but not exported"; status=1; fi
+  if ! grep -qx "$fn" <<< "$defined"; then echo "FAIL: $fn is declared in the header but not exported"; status=1; fi
 done
 echo "functions declared in the header: $declared (checked above)"
 for node in STIPPLE_1.0 STIPPLE_1.1; do
