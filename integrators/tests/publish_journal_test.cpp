@@ -172,3 +172,91 @@ BOOST_AUTO_TEST_CASE(rename_together_publishes_both_and_leaves_no_journal) {
     BOOST_TEST(f.read("img.png") == "new png");
     BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing());
 }
+
+// ---- journals and temporaries that are not this user's own are never obeyed -------------------------------------
+
+namespace {
+
+constexpr uid_t kNobody = 65534;
+
+// Another user's files can only be made by root; elsewhere the ownership cases are skipped, saying so.
+bool canActAsAnotherUser() {
+    if (geteuid() == 0) return true;
+    BOOST_TEST_MESSAGE("skipped: needs root to create files owned by another user (uid " << kNobody << ")");
+    return false;
+}
+
+void chownToNobody(const std::string& path) { BOOST_REQUIRE(lchown(path.c_str(), kNobody, kNobody) == 0); }
+
+// A journal as a dead process of another user would leave it: it would replace `target` with `text`.
+std::string plantJournal(const Folder& f, const std::string& target, const std::string& text, std::string& temp) {
+    std::string journal;
+    const pid_t pid = fork();
+    BOOST_REQUIRE(pid >= 0);
+    if (pid == 0) {
+        const std::string t = tempPathBeside((f.dir / target).string());
+        std::ofstream(t) << text;
+        const std::string j = writePublishJournal({{t, (f.dir / target).string()}});
+        std::ofstream(f.dir / "planted") << t << "\n" << j << "\n";
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    std::ifstream in(f.dir / "planted");
+    std::getline(in, temp);
+    std::getline(in, journal);
+    fs::remove(f.dir / "planted");
+    return journal;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(another_users_journal_is_left_alone) {
+    if (!canActAsAnotherUser()) return;
+    Folder f("foreign-journal");
+    f.write("notes.txt", "mine");
+    std::string temp;
+    const std::string journal = plantJournal(f, "notes.txt", "theirs", temp);
+    chownToNobody(temp);
+    chownToNobody(journal);
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("notes.txt") == "mine");
+    BOOST_TEST(fs::exists(journal));
+    BOOST_TEST(fs::exists(temp));
+}
+
+BOOST_AUTO_TEST_CASE(an_own_journal_naming_another_users_target_leaves_it) {
+    if (!canActAsAnotherUser()) return;
+    Folder f("foreign-target");
+    f.write("data.csv", "theirs");
+    chownToNobody((f.dir / "data.csv").string());
+    std::string temp;
+    plantJournal(f, "data.csv", "replaced", temp);
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(f.read("data.csv") == "theirs");
+    BOOST_TEST(f.listing().find("stipple-tmp") == std::string::npos, f.listing()); // our own stale files went
+}
+
+BOOST_AUTO_TEST_CASE(another_users_stale_temporary_is_left_alone) {
+    if (!canActAsAnotherUser()) return;
+    Folder f("foreign-temp");
+    std::string temp;
+    const std::string journal = plantJournal(f, "img.exr", "x", temp);
+    fs::remove(journal);
+    chownToNobody(temp);
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(fs::exists(temp));
+}
+
+BOOST_AUTO_TEST_CASE(a_symlink_with_a_temporary_name_is_left_alone) {
+    Folder f("symlink-temp");
+    f.write("precious", "keep");
+    std::string temp;
+    const std::string journal = plantJournal(f, "img.exr", "x", temp);
+    fs::remove(journal);
+    fs::remove(temp);
+    fs::create_symlink(f.dir / "precious", temp); // a dead process's temporary name, pointing at a file
+    sweepStaleTemps(f.dir.string());
+    BOOST_TEST(fs::is_symlink(temp));
+    BOOST_TEST(f.read("precious") == "keep");
+}

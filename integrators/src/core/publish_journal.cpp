@@ -117,16 +117,31 @@ void renameTogether(const std::vector<PendingRename>& renames) {
 }
 
 bool recoverPublishJournal(const std::string& path) {
+    // Only a journal this user wrote is obeyed; another user's (planted in a shared folder) is left as it is.
+    if (std::string why; !isOwnFile(path, false, why)) {
+        warnLeftAlone(path, why);
+        return false;
+    }
     std::string text;
-    {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream s;
-        if (in) s << in.rdbuf();
-        text = s.str();
+    if (const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC); fd >= 0) {
+        char buf[65536];
+        for (ssize_t n; text.size() <= (1u << 20) && (n = ::read(fd, buf, sizeof buf)) != 0;) {
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0) break;
+            text.append(buf, size_t(n));
+        }
+        ::close(fd);
     }
     std::vector<PendingRename> renames;
     const fs::path dir = fs::path(path).parent_path();
-    const bool readable = text.size() <= (1u << 20) && parseJournal(text, renames);
+    bool readable = text.size() <= (1u << 20) && parseJournal(text, renames);
+    // Every temporary and target it would rename or remove must be this user's regular file (or absent).
+    for (const PendingRename& r : renames)
+        for (const std::string* name : {&r.temp, &r.target})
+            if (std::string why; isThere(dir / *name) && !isOwnFile((dir / *name).string(), false, why)) {
+                warnLeftAlone((dir / *name).string(), why + " (named by the publish journal " + path + ")");
+                readable = false;
+            }
     if (readable) {
         // Renames run in order, so the temporaries still there form a tail when nothing else interfered.
         std::vector<bool> present;

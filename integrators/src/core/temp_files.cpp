@@ -9,6 +9,7 @@
 #include <csignal>
 #include <ctime>
 #include <filesystem>
+#include <iostream>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -108,6 +109,29 @@ bool parseTempName(const std::string& name, std::string& host, long& pid) {
 
 } // namespace
 
+bool isOwnFile(const std::string& path, bool folderToo, std::string& why) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0) {
+        why = std::string("cannot stat it: ") + std::strerror(errno);
+        return false;
+    }
+    if (!S_ISREG(st.st_mode) && !(folderToo && S_ISDIR(st.st_mode))) {
+        why = S_ISLNK(st.st_mode) ? "a symlink" : S_ISDIR(st.st_mode) ? "a folder" : "not a regular file";
+        why += ", which this tool never writes there";
+        return false;
+    }
+    if (st.st_uid != ::geteuid()) {
+        why = "owned by uid " + std::to_string(st.st_uid) + ", not by this user (uid " +
+              std::to_string(::geteuid()) + ")";
+        return false;
+    }
+    return true;
+}
+
+void warnLeftAlone(const std::string& path, const std::string& why) {
+    std::cerr << "warning: left " << path << " alone: " << why << "\n";
+}
+
 std::string tempPathBeside(const std::string& target) {
     static std::atomic<unsigned> counter{0};
     static const std::string host = hostName();
@@ -155,7 +179,13 @@ size_t sweepStaleTemps(const std::string& dir) {
             struct stat st {};
             gone = lstat(it->path().c_str(), &st) == 0 && now - st.st_mtime > 24 * 3600;
         }
-        if (gone) stale.push_back(it->path());
+        if (!gone) continue;
+        // Never act on what another user (or a symlink) put there under one of our names.
+        if (std::string why; !isOwnFile(it->path().string(), !isPublishJournalName(name), why)) {
+            warnLeftAlone(it->path().string(), why);
+            continue;
+        }
+        stale.push_back(it->path());
     }
     // A dead process's publish journal first: it renames (or removes) temporaries the plain sweep would remove.
     size_t removed = 0;

@@ -12,6 +12,8 @@
 //   <temporary><target>
 //   end
 // Both names are plain file names in the journal's folder; a journal naming anything else is ignored and removed.
+// Recovery obeys only a journal owned by the effective user, and only when every temporary and target it names
+// is that user's regular file (or absent); anything else is left alone and named in a warning.
 #pragma once
 
 #include <string>

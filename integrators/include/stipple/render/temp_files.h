@@ -21,7 +21,17 @@ void installTempCleanupOnSignals();
 
 // Removes temporaries in `dir` (not recursive) whose process has ended: same host and no such pid, or older
 // than a day from another host. Returns how many were removed. A missing folder is not an error.
+// Only what this process could have written is touched: a name of the pattern above, owned by the effective
+// user, a regular file or a folder (never a symlink, FIFO or device). Anything else with such a name (another
+// user's, planted in a shared sticky folder) is left alone and named in a warning on stderr.
 size_t sweepStaleTemps(const std::string& dir);
+
+// True when `path` (not followed if a symlink) is a regular file (or, with `folderToo`, a folder) owned by the
+// effective user; otherwise false and `why` says what it is instead.
+bool isOwnFile(const std::string& path, bool folderToo, std::string& why);
+
+// The one warning for something a sweep or a journal recovery leaves alone: "warning: left PATH alone: WHY".
+void warnLeftAlone(const std::string& path, const std::string& why);
 
 // A registered temporary: removed (file or folder) on destruction unless released after its rename.
 class TempPath {
