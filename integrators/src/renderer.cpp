@@ -165,6 +165,8 @@ private:
 };
 
 RenderResult SceneImpl::render(const RenderOptions& options) const {
+    // What TBB's arena or the film cannot take is refused here, whoever set it (a command line, a matrix).
+    checkRenderSettings(options.threads, options.width, options.height, options.maxDepth);
     Resolved r = resolveSettings(options);
     checkRenderBudget(r.width, r.height, r.spp); // before the film or the sampler allocates
     Camera camera(scene_.description().camera, r.width, r.height);

@@ -1,10 +1,13 @@
 #include "matrix.h"
 
+#include "report.h"
+
 #include <stipple/render/input_limits.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -68,6 +71,8 @@ struct Parser {
         if (!node.IsScalar()) fail(node, what + " must be a scalar");
         if constexpr (std::is_same_v<T, std::string>) {
             return node.Scalar();
+        } else if (node.IsQuoted()) {
+            fail(node, what + " must be a number, not quoted text ('" + node.Scalar() + "')");
         } else if constexpr (std::is_floating_point_v<T>) {
             double v = 0;
             if (yaml::StrictYaml::parseNumber(node, v) != yaml::StrictYaml::Number::Ok)
@@ -122,6 +127,7 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
     const yaml::Node scenes = P.required(croot, "scenes", "the matrix");
     if (!scenes.IsSequence() || scenes.size() == 0) P.fail(scenes, "scenes must be a non-empty list");
     std::set<std::string> sceneNames; // a linear findScene per entry made a 15 MB matrix take minutes
+    std::map<std::string, std::string> fileNames; // safeName -> scene name
     for (const auto& s : scenes) {
         MatrixScene ms;
         if (s.IsScalar()) {
@@ -158,14 +164,22 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                     if (!(0 <= v[0] && v[0] < v[2] && v[2] <= 1 && 0 <= v[1] && v[1] < v[3] && v[3] <= 1))
                         P.fail(rect, "rect must satisfy 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1");
                     rg.x0 = v[0], rg.y0 = v[1], rg.x1 = v[2], rg.y1 = v[3];
-                    for (const auto& other : ms.regions)
+                    for (const auto& other : ms.regions) {
                         if (other.name == rg.name) P.fail(rn, "region '" + rg.name + "' appears twice");
+                        if (safeName(other.name) == safeName(rg.name))
+                            P.fail(rn, "region names '" + other.name + "' and '" + rg.name +
+                                           "' have the same file name '" + safeName(rg.name) +
+                                           "' in the report; rename one");
+                    }
                     ms.regions.push_back(rg);
                 }
             }
             if (s["max_depth"]) {
                 ms.maxDepth = P.get<int>(s["max_depth"], "max_depth");
-                if (ms.maxDepth < 0) P.fail(s["max_depth"], "max_depth must be ≥ 0");
+                if (ms.maxDepth < 0 || ms.maxDepth > render::limits::kMaxPathDepth)
+                    P.fail(s["max_depth"], "max_depth must be in [0, " +
+                                               std::to_string(render::limits::kMaxPathDepth) + "], got " +
+                                               s["max_depth"].Scalar());
             }
         }
         ms.path = resolve(ms.file);
@@ -176,6 +190,11 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
         if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
         if (!sceneNames.insert(ms.name).second)
             P.fail(s, "scene name '" + ms.name + "' appears twice; give one a 'name'");
+        // The report names a scene's crops and plots by safeName: two names that reduce to one file name would
+        // show one scene's figures for both.
+        if (auto [it, fresh] = fileNames.emplace(safeName(ms.name), ms.name); !fresh)
+            P.fail(s, "scene names '" + it->second + "' and '" + ms.name + "' have the same file name '" + it->first +
+                          "' in the report; rename one");
         m.scenes.push_back(ms);
     }
 }
@@ -313,6 +332,14 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
             P.fail(n, std::string(what) + " " + n.Scalar() + " is not among the matrix's spp");
         return v;
     };
+    // A pattern compared with itself is a matrix error, not a failed claim.
+    auto orderOf = [&](const yaml::Node& order, std::vector<std::string>& out) {
+        for (const auto& p : order) {
+            out.push_back(matrixPattern(p));
+            if (std::count(out.begin(), out.end(), out.back()) > 1)
+                P.fail(p, "pattern '" + out.back() + "' appears twice in order");
+        }
+    };
     auto notSeparated = [&](const yaml::Node& c, bool fails) {
         if (!c["not_separated"]) return fails;
         auto v = P.get<std::string>(c["not_separated"], "not_separated");
@@ -335,7 +362,7 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 const yaml::Node order = P.required(c, "order", "an ordering check");
                 if (!order.IsSequence() || order.size() < 2)
                     P.fail(order, "order must list at least two patterns, best first");
-                for (const auto& p : order) k.order.push_back(matrixPattern(p));
+                orderOf(order, k.order);
                 k.notSeparatedFails = notSeparated(c, true);
             } else if (type == "slope") {
                 k.type = CheckType::Slope;
@@ -352,6 +379,8 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 k.numerator = matrixPattern(P.required(c, "numerator", "a time_ratio check"));
                 k.denominator = matrixPattern(P.required(c, "denominator", "a time_ratio check"));
+                if (k.denominator == k.numerator)
+                    P.fail(c["denominator"], "numerator and denominator are the same pattern '" + k.numerator + "'");
                 k.maxRatio = P.positive(P.required(c, "max", "a time_ratio check"), "max");
                 k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
                 // An interval straddling the bound says the run could not tell, not that the claim is false.
@@ -388,7 +417,7 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 const yaml::Node order = P.required(c, "order", what);
                 if (!order.IsSequence() || order.size() < 2)
                     P.fail(order, "order must list at least two patterns, most efficient first");
-                for (const auto& p : order) k.order.push_back(matrixPattern(p));
+                orderOf(order, k.order);
                 k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
                 if (c["study"]) k.study = P.get<std::string>(c["study"], "study");
                 k.notSeparatedFails = notSeparated(c, false);
@@ -428,7 +457,9 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     if (croot["cache"]) m.cacheDir = resolve(P.get<std::string>(croot["cache"], "cache"));
     if (croot["threads"]) {
         m.threads = P.get<int>(croot["threads"], "threads");
-        if (m.threads < 0) P.fail(croot["threads"], "threads must be ≥ 0 (0: all hardware threads)");
+        if (m.threads < 0 || m.threads > render::limits::kMaxThreads)
+            P.fail(croot["threads"], "threads must be in [0, " + std::to_string(render::limits::kMaxThreads) +
+                                         "] (0: all hardware threads), got " + croot["threads"].Scalar());
     }
 
     parseScenes(P, croot, base, m);

@@ -46,22 +46,31 @@ public:
             throw DocumentError(DocumentError::Kind::Syntax, markOf(mark), "alias to an unknown anchor");
         place(anchors_[anchor]);
     }
-    void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+    void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor,
                   const std::string& value) override {
+        checkTag(mark, tag);
+        // yaml-cpp would merge nothing: a map key "<<" would be read as a plain (unknown) key.
+        if (tag == "?" && value == "<<" && !open_.empty() && open_.back().map &&
+            (scratch_.size() - open_.back().start) % 2 == 0)
+            throw DocumentError(DocumentError::Kind::Syntax, markOf(mark), "YAML merge keys (<<) are not supported");
         const size_t offset = d_.arena_.size();
         if (offset + value.size() + 1 > UINT32_MAX)
             throw DocumentError(DocumentError::Kind::Other, markOf(mark), "scalars larger than 4 GiB in total");
         d_.arena_.insert(d_.arena_.end(), value.begin(), value.end());
         d_.arena_.push_back('\0');
-        add(record(mark, Document::Kind::Scalar, uint32_t(offset), uint32_t(value.size())), anchor);
+        const uint32_t node = record(mark, Document::Kind::Scalar, uint32_t(offset), uint32_t(value.size()));
+        if (tag == "!") d_.nodes_[node].kindAndColumn |= Document::kQuotedBit; // yaml-cpp's tag of a quoted scalar
+        add(node, anchor);
     }
-    void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+    void OnSequenceStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor,
                          YAML::EmitterStyle::value) override {
+        checkTag(mark, tag);
         open(record(mark, Document::Kind::Sequence, 0, 0), anchor);
     }
     void OnSequenceEnd() override { close(); }
-    void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+    void OnMapStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor,
                     YAML::EmitterStyle::value) override {
+        checkTag(mark, tag);
         open(record(mark, Document::Kind::Map, 0, 0), anchor);
     }
     void OnMapEnd() override { close(); }
@@ -86,6 +95,14 @@ private:
         std::unique_ptr<KeySet> keys;
     };
     static constexpr size_t kLinearKeyScan = 16; // below this many keys a scan beats a hash set
+
+    // "?" (plain) and "!" (quoted) are yaml-cpp's non-specific tags; any other is an explicit tag, which the
+    // loaders would ignore (!!str 5 read as a number): refused.
+    static void checkTag(const YAML::Mark& mark, const std::string& tag) {
+        if (!tag.empty() && tag != "?" && tag != "!")
+            throw DocumentError(DocumentError::Kind::Syntax, markOf(mark),
+                                "YAML tags ('" + tag + "') are not supported");
+    }
 
     uint32_t record(const YAML::Mark& mark, Document::Kind kind, uint32_t first, uint32_t count) {
         if (d_.nodes_.size() >= Document::kNone - 1)
@@ -168,7 +185,24 @@ std::shared_ptr<const Document> Document::parse(std::string_view text) {
         std::istream in(&buffer);
         YAML::Parser parser(in);
         DocumentBuilder builder(*doc);
-        parser.HandleNextDocument(builder); // the first document only, as YAML::Load
+        parser.HandleNextDocument(builder);
+        // A second document ("---") would be ignored by a loader that reads the first: refused.
+        struct SecondDocument : YAML::EventHandler {
+            void OnDocumentStart(const YAML::Mark& mark) override {
+                throw DocumentError(DocumentError::Kind::Syntax, markOf(mark),
+                                    "a second YAML document ('---'); a file holds one");
+            }
+            void OnDocumentEnd() override {}
+            void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+            void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+            void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+            void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                                 YAML::EmitterStyle::value) override {}
+            void OnSequenceEnd() override {}
+            void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+            void OnMapEnd() override {}
+        } second;
+        parser.HandleNextDocument(second);
     } catch (const YAML::DeepRecursion& e) {
         throw DocumentError(DocumentError::Kind::TooDeep, markOf(e.mark), e.msg);
     } catch (const YAML::ParserException& e) {

@@ -58,9 +58,11 @@ void StrictYaml::onlyKeys(const Node& map, const std::vector<std::string>& allow
 }
 
 StrictYaml::Number StrictYaml::parseNumber(const Node& node, double& out) {
-    if (!node.IsScalar()) return Number::NotANumber;
+    if (!node.IsScalar() || node.IsQuoted()) return Number::NotANumber;
     const std::string_view s = node.ScalarView(); // NUL-terminated
     if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return Number::NotANumber;
+    // Decimal only, as the integers: strtod would also take a hex float (0x1p-2).
+    if (s.find_first_of("xX") != std::string_view::npos) return Number::NotANumber;
     char* end = nullptr;
     const double v = std::strtod(s.data(), &end);
     if (end != s.data() + s.size()) return Number::NotANumber;
@@ -70,7 +72,7 @@ StrictYaml::Number StrictYaml::parseNumber(const Node& node, double& out) {
 }
 
 bool StrictYaml::parseInteger(const Node& node, long long& out) {
-    if (!node.IsScalar()) return false;
+    if (!node.IsScalar() || node.IsQuoted()) return false;
     const std::string_view s = node.ScalarView(); // NUL-terminated
     if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
     errno = 0;

@@ -25,6 +25,10 @@ inline constexpr double kMaxCoordinate = 1e12;             // |x| of any point t
 inline constexpr uint64_t kMaxTrianglesPerShape = 1ull << 26;
 inline constexpr uint64_t kMaxPixels = 1ull << 25;           // width × height of one render (33.5 M)
 inline constexpr uint64_t kMaxSamplesPerRender = 1ull << 36; // width × height × spp of one render
+inline constexpr int kMaxThreads = 1024;   // render threads (TBB's arena takes at most 65536, and far more than
+                                           // any machine this runs on has cores)
+inline constexpr int kMaxImageSide = 1 << 15; // width or height of a render, in pixels
+inline constexpr int kMaxPathDepth = 1000;    // max_depth of a path
 
 // Not a check but a guarantee, tested (integrators.load_memory, validation.matrix_memory): loading a scene or a matrix
 // file raises the process's peak memory by at most kLoadBytesPerInputByte × its size + kLoadBaseBytes. The parsed YAML
@@ -92,6 +96,21 @@ inline void checkRenderBudget(int width, int height, uint64_t spp) {
                                     std::to_string(spp) + " spp = " + std::to_string(pixels * spp) +
                                     " samples exceeds the limit of " + std::to_string(limits::kMaxSamplesPerRender) +
                                     " samples per render");
+}
+
+// Throws std::invalid_argument naming the setting when one numeric render setting is outside its range: threads in
+// [0, kMaxThreads] (0: all hardware threads), width and height in [0, kMaxImageSide] (0: the scene's), max depth
+// in [-1, kMaxPathDepth] (-1: the scene's). The command lines and the matrix check the same ranges with positions.
+inline void checkRenderSettings(int threads, int width, int height, int maxDepth) {
+    auto check = [](const char* what, long long v, long long lo, long long hi) {
+        if (v < lo || v > hi)
+            throw std::invalid_argument(std::string(what) + " " + std::to_string(v) + " is outside [" +
+                                        std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    };
+    check("threads", threads, 0, limits::kMaxThreads);
+    check("width", width, 0, limits::kMaxImageSide);
+    check("height", height, 0, limits::kMaxImageSide);
+    check("max depth", maxDepth, -1, limits::kMaxPathDepth);
 }
 
 } // namespace stipple::render

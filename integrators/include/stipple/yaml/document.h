@@ -3,8 +3,9 @@
 // yaml-cpp's own node tree costs about 60-70 bytes of memory per byte of input. Here a document is three flat
 // arrays: one 16-byte record per node, one 4-byte index per child reference and one arena holding every scalar's
 // text once (NUL-terminated). An alias is the index of its anchored node, never a copy, so a "billion laughs"
-// input stays as small as its text. The builder (document.cpp) reads yaml-cpp's event stream and rejects a
-// duplicate map key while building; yaml-cpp does not appear in this header.
+// input stays as small as its text. The builder (document.cpp) reads yaml-cpp's event stream and rejects while
+// building what yaml-cpp would accept but a loader would misread: a duplicate map key, a merge key (<<), a tag
+// (!!int, !foo), a second document (---); yaml-cpp does not appear in this header.
 #pragma once
 
 #include <stipple/yaml/chunked_array.h>
@@ -43,20 +44,22 @@ class Document {
 public:
     enum class Kind : uint8_t { Null, Scalar, Sequence, Map };
 
-    // Parses the first document of `text`. Throws DocumentError.
+    // Parses `text`, which must hold one document. Throws DocumentError.
     static std::shared_ptr<const Document> parse(std::string_view text);
 
     // One node: where it starts, and either its scalar text (arena offset, length) or its children (offset into
     // children_, count; a map's children alternate key, value).
     struct Record {
         uint32_t line;
-        uint32_t kindAndColumn; // kind in the top 2 bits, column (saturated) in the rest
+        uint32_t kindAndColumn; // kind in the top 2 bits, then the quoted flag, column (saturated) in the rest
         uint32_t first;
         uint32_t count;
         Kind kind() const { return Kind(kindAndColumn >> 30); }
+        bool quoted() const { return (kindAndColumn & kQuotedBit) != 0; }
         uint32_t column() const { return kindAndColumn & kColumnMask; }
     };
-    static constexpr uint32_t kColumnMask = (1u << 30) - 1;
+    static constexpr uint32_t kQuotedBit = 1u << 29;
+    static constexpr uint32_t kColumnMask = kQuotedBit - 1;
     static constexpr uint32_t kNone = UINT32_MAX;
 
     const Record& record(uint32_t i) const { return nodes_[i]; }
@@ -89,6 +92,8 @@ public:
     bool IsScalar() const { return IsDefined() && kind() == Document::Kind::Scalar; }
     bool IsSequence() const { return IsDefined() && kind() == Document::Kind::Sequence; }
     bool IsMap() const { return IsDefined() && kind() == Document::Kind::Map; }
+    // A scalar written in quotes ('2' or "2"): text, never a number.
+    bool IsQuoted() const { return IsScalar() && rec().quoted(); }
 
     // A scalar's text ("" for anything else). ScalarView's data is NUL-terminated.
     std::string Scalar() const { return std::string(ScalarView()); }
