@@ -1,5 +1,7 @@
 #include "cli_args.h"
 
+#include <stipple/render/input_limits.h>
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -7,62 +9,100 @@ namespace stipple::validation {
 
 const char* const kValidateUsage =
     "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
-    "                        [--shard i/n] [--references-only] [--merge DIR1 DIR2 ...]\n"
+    "                        [--shard i/n] [--references-only] [--quiet] [--merge DIR1 DIR2 ...]\n"
     "       stipple-validate --version | --help\n"
-    "  -o DIR             report folder (default: report)\n"
-    "  --threads T        render threads (default: the matrix's, else all hardware threads)\n"
-    "  --cache DIR        reference cache (default: the matrix's 'cache', else DIR/../.stipple-cache)\n"
-    "  --baseline FILE    compare with a stored results.json: RMS beyond the intervals or time beyond the\n"
-    "                     matrix's baseline.time_factor fails\n"
+    "Runs the matrix's scenes x patterns x spp x seeds, measures RMS against cached references and render time,\n"
+    "checks the matrix's claims and writes an HTML report. An option's value may follow as the next argument or\n"
+    "after '=' (--threads=4).\n"
+    "  -o, --output DIR   report folder (default: report). Replaced whole by each run; only an empty folder or\n"
+    "                     one stipple-validate made (it holds .stipple-report) is accepted. A symlink is followed\n"
+    "  --threads T        render threads, 0..1024 (default: the matrix's 'threads', else 0 = all hardware threads)\n"
+    "  --cache DIR        reference cache (default: the matrix's 'cache', else .stipple-cache beside the report\n"
+    "                     folder)\n"
+    "  --baseline FILE    compare with a stored results.json (default: none): RMS beyond the intervals or time\n"
+    "                     beyond the matrix's baseline.time_factor fails\n"
     "  --shard i/n        run the i-th of n deterministic subsets of the (scene, spp, seed) groups; checks are\n"
-    "                     left to --merge\n"
-    "  --references-only  make the references (of this shard's scenes) in the cache and stop\n"
-    "  --merge DIR...     combine shard report folders into the report a single run makes\n"
+    "                     left to --merge (default: 1/1, the whole matrix)\n"
+    "  --references-only  make the references (of this shard's scenes) in the cache and stop (default: off)\n"
+    "  --merge DIR...     combine shard report folders into the report a single run makes (default: off)\n"
+    "  -q, --quiet        no progress, tables or summary: only warnings, errors and the exit status (default: off)\n"
+    "  -h, --help         this text; --version: the version line\n"
     "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
 
 Args parseArgs(const std::vector<std::string>& argv) {
     const size_t argc = argv.size();
     Args a;
-    auto value = [&](size_t& i) -> std::string {
-        if (i + 1 >= argc) throw UsageError(argv[i] + " needs a value");
-        return argv[++i];
-    };
     for (size_t i = 0; i < argc; ++i) {
         std::string s = argv[i];
+        // "--opt=value" is "--opt value"; "-o=x" is not split (a short option takes its value apart).
+        std::optional<std::string> attached;
+        if (s.starts_with("--"))
+            if (const size_t eq = s.find('='); eq != std::string::npos) {
+                attached = s.substr(eq + 1);
+                s.resize(eq);
+            }
+        // A path or count given empty is an error, never "the default".
+        auto value = [&]() -> std::string {
+            std::string v;
+            if (attached)
+                v = *attached;
+            else if (i + 1 >= argc)
+                throw UsageError(s + " needs a value");
+            else
+                v = argv[++i];
+            if (v.empty()) throw UsageError(s + ": expected a value, got an empty one");
+            return v;
+        };
+        auto flag = [&] {
+            if (attached) throw UsageError(s + " takes no value, got '" + *attached + "'");
+        };
         if (s == "-h" || s == "--help") {
+            flag();
             a.help = true;
             return a;
         } else if (s == "--version") {
+            flag();
             a.version = true;
             return a;
         } else if (s == "-o" || s == "--output")
-            a.out = value(i);
+            a.out = value();
         else if (s == "--cache")
-            a.cache = value(i);
+            a.cache = value();
         else if (s == "--baseline")
-            a.baseline = value(i);
+            a.baseline = value();
         else if (s == "--threads") {
-            std::string v = value(i);
+            std::string v = value();
             char* end = nullptr;
             long t = std::strtol(v.c_str(), &end, 10);
-            if (v.empty() || *end || t < 0 || t > 1024)
-                throw UsageError("--threads: expected a count in [0, 1024], got '" + v + "'");
+            if (*end || t < 0 || t > render::limits::kMaxThreads)
+                throw UsageError("--threads: expected a count in [0, " + std::to_string(render::limits::kMaxThreads) +
+                                 "], got '" + v + "'");
             a.threads = int(t);
         } else if (s == "--shard") {
-            std::string v = value(i);
+            std::string v = value();
             int n1 = 0, n2 = 0;
             char extra;
             if (std::sscanf(v.c_str(), "%d/%d%c", &n1, &n2, &extra) != 2 || n2 < 1 || n1 < 1 || n1 > n2)
                 throw UsageError("--shard: expected i/n with 1 ≤ i ≤ n, got '" + v + "'");
             a.shardIndex = n1;
             a.shardCount = n2;
-        } else if (s == "--references-only")
+        } else if (s == "--references-only") {
+            flag();
             a.referencesOnly = true;
-        else if (s == "--merge") {
-            while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) a.merge.push_back(argv[++i]);
+        } else if (s == "-q" || s == "--quiet") {
+            flag();
+            a.quiet = true;
+        } else if (s == "--merge") {
+            if (attached) a.merge.push_back(value());
+            while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) {
+                if (argv[i + 1].empty()) throw UsageError("--merge: expected a folder, got an empty argument");
+                a.merge.push_back(argv[++i]);
+            }
             if (a.merge.empty()) throw UsageError("--merge needs at least one report folder");
         } else if (!s.empty() && s[0] == '-')
-            throw UsageError("unknown option '" + s + "'");
+            throw UsageError("unknown option '" + argv[i] + "'");
+        else if (s.empty())
+            throw UsageError("an empty argument where the matrix file was expected");
         else if (a.matrix.empty())
             a.matrix = s;
         else

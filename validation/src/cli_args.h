@@ -1,6 +1,7 @@
 // stipple-validate's command line, parsed apart from main so the fuzzer (validation/fuzz) can drive it.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct Args {
     std::string matrix, out = "report", cache, baseline;
     int threads = 0, shardIndex = 1, shardCount = 1;
     bool referencesOnly = false;
+    bool quiet = false; // -q / --quiet: warnings, errors and the exit status only
     std::vector<std::string> merge;
     bool help = false;    // -h / --help: print kValidateUsage and stop
     bool version = false; // --version: print the version line and stop

@@ -21,6 +21,7 @@
 #include "matrix.h"
 #include "merge.h"
 #include "preflight.h"
+#include "progress.h"
 #include "report_publish.h"
 #include "report.h"
 #include "results.h"
@@ -56,6 +57,12 @@ int main(int argc, char** argv) {
         std::cout << stipple::versionLine("stipple-validate") << "\n";
         return 0;
     }
+    if (args.quiet) {
+        // Nothing on stdout (tables, summary), no progress; warnings and errors still go to stderr.
+        std::cout.setstate(std::ios::badbit);
+        if (!std::freopen("/dev/null", "w", stdout)) std::fclose(stdout);
+        Progress::setQuiet(true);
+    }
     Matrix matrix;
     try {
         // Pattern and integrator names come from their owners: the loaded shim and the renderer's registry.
@@ -84,6 +91,7 @@ int main(int argc, char** argv) {
         pre.cacheDir = args.merge.empty() ? cache : "";
         pre.baselinePath = args.baseline;
         pre.reportDir = args.referencesOnly ? "" : args.out;
+        pre.mergeDirs = args.merge;
         unloadable = preflight(pre);
         if (!args.referencesOnly) staging.emplace(args.out);
     } catch (const std::exception& e) {

@@ -35,6 +35,19 @@ std::map<std::string, std::string> preflight(const PreflightInputs& in) {
                                  ", which is replaced whole by each run");
     }
 
+    // Publishing the merged report replaces its folder whole: never onto, into or around a shard it reads.
+    if (!in.reportDir.empty())
+        for (const std::string& shard : in.mergeDirs) {
+            const fs::path a = fs::weakly_canonical(fs::absolute(in.reportDir), ec),
+                           b = fs::weakly_canonical(fs::absolute(shard), ec);
+            const auto inside = [](const fs::path& x, const fs::path& y) {
+                return std::mismatch(y.begin(), y.end(), x.begin(), x.end()).first == y.end();
+            };
+            if (inside(a, b) || inside(b, a))
+                throw PreflightError("-o " + in.reportDir + ": overlaps the shard folder " + shard +
+                                     " that --merge reads; choose another report folder");
+        }
+
     if (!in.cacheDir.empty()) {
         fs::create_directories(in.cacheDir, ec);
         if (ec) throw PreflightError("cache folder " + in.cacheDir + ": cannot create it: " + ec.message());

@@ -1,11 +1,13 @@
 // Everything that can fail before the first cell renders is checked first, so a run does not spend an hour and
 // then fail on a missing baseline or an unwritable folder: the baseline file reads as a results.json, the cache
 // folder takes a file, and every scene file parses (a scene that does not is reported now and skipped later).
+// The report folder of a --merge must not overlap a shard folder it reads (it would replace one of them).
 #pragma once
 
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "matrix.h"
 
@@ -22,6 +24,7 @@ struct PreflightInputs {
     std::string cacheDir;
     std::string baselinePath; // empty: none
     std::string reportDir;    // empty: no report (references only)
+    std::vector<std::string> mergeDirs; // --merge's shard folders: the report folder must be none of them
 };
 
 // Throws PreflightError for the baseline and the cache; returns scene name -> load error for the scenes that

@@ -7,6 +7,12 @@
 
 namespace stipple::validation {
 
+namespace {
+bool quietProgress = false;
+}
+
+void Progress::setQuiet(bool quiet) { quietProgress = quiet; }
+
 Progress::Progress(size_t total)
     : total_(total), tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
 
@@ -21,6 +27,7 @@ std::string Progress::eta() const {
 
 void Progress::step(const std::string& what) {
     ++done_;
+    if (quietProgress) return;
     if (tty_) {
         std::fprintf(stderr, "\r\033[K%s %zu/%zu cells, ETA %s  %.60s", render::progressBar(done_, total_).c_str(),
                      done_, total_, eta().c_str(), what.c_str());
@@ -32,6 +39,7 @@ void Progress::step(const std::string& what) {
 }
 
 void Progress::note(const std::string& message) {
+    if (quietProgress && !message.starts_with("ERROR")) return;
     if (tty_ && barShown_) std::fprintf(stderr, "\r\033[K");
     std::fprintf(stderr, "%s\n", message.c_str());
     barShown_ = false;

@@ -15,6 +15,8 @@ public:
     // A message that is not a cell (reference renders, scene loads): its own line in both modes.
     void note(const std::string& message);
     void finish();
+    // --quiet: from now on steps and notes are not shown, except notes that start with "ERROR".
+    static void setQuiet(bool quiet);
     // Time between pause() and resume() (reference renders, scene loads) is left out of the ETA.
     void pause();
     void resume();

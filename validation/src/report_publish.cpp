@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -15,23 +16,37 @@ namespace fs = std::filesystem;
 
 bool isReplaceableReportFolder(const std::string& dir) {
     std::error_code ec;
-    if (!fs::exists(dir, ec)) return true;
-    if (!fs::is_directory(dir, ec)) return false;
-    if (fs::is_empty(dir, ec)) return true;
-    return fs::exists(fs::path(dir) / "index.html", ec) || fs::exists(fs::path(dir) / "results.json", ec);
+    const fs::file_status st = fs::symlink_status(dir, ec);
+    if (!fs::exists(st)) return true;
+    if (!fs::is_directory(st)) return false;
+    if (fs::is_empty(dir, ec) && !ec) return true;
+    return fs::is_regular_file(fs::symlink_status(fs::path(dir) / kReportMarker, ec));
+}
+
+std::string resolveReportTarget(const std::string& dir) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(dir, ec))) return dir;
+    const fs::path real = fs::canonical(dir, ec);
+    if (ec || !fs::is_directory(real, ec))
+        throw std::runtime_error("-o " + dir + ": a symlink that does not lead to a folder; refusing to replace it");
+    return real.string();
 }
 
 ReportStaging::ReportStaging(const std::string& target)
-    : target_(fs::path(target).lexically_normal().string()),
-      temp_(target_.empty() || target_.back() == '/' ? target_.substr(0, target_.size() - 1) : target_) {
+    : target_(resolveReportTarget([&] {
+          std::string t = fs::path(target).lexically_normal().string();
+          if (!t.empty() && t.back() == '/') t.pop_back(); // "report/" would follow a symlink named report
+          return t;
+      }())),
+      temp_(target_) {
     const std::string leaf = fs::path(temp_.path()).filename().string();
     if (target_.empty() || target_ == "." || target_ == ".." || target_ == "/" || target_.ends_with("/..") ||
         target_.ends_with("/.") || leaf.rfind("...", 0) == 0)
         throw std::runtime_error("-o " + target + ": must name a report folder, not the working folder, a parent or /");
     if (!isReplaceableReportFolder(target_))
-        throw std::runtime_error("-o " + target +
-                                 ": exists and is not a report folder (no index.html or "
-                                 "results.json); refusing to replace it");
+        throw std::runtime_error("-o " + target + ": exists and is not a report folder (not empty, no " +
+                                 kReportMarker + " that stipple-validate writes in each report); refusing to "
+                                 "replace it");
     std::error_code ec;
     const fs::path parent = fs::absolute(temp_.path()).parent_path();
     fs::create_directories(parent, ec);
@@ -39,6 +54,10 @@ ReportStaging::ReportStaging(const std::string& target)
     if (!fs::create_directory(temp_.path(), ec) || ec)
         throw std::runtime_error("-o " + target + ": cannot create a folder beside it (" + temp_.path() +
                                  "): " + (ec ? ec.message() : std::string("it exists")));
+    std::ofstream marker(fs::path(temp_.path()) / kReportMarker);
+    marker << "a report folder of stipple-validate: the next run with -o here replaces it whole\n";
+    if (!marker.flush())
+        throw std::runtime_error("-o " + target + ": cannot write in " + temp_.path());
 }
 
 void ReportStaging::publish() {

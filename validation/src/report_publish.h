@@ -2,6 +2,11 @@
 // whole (renameat2 RENAME_EXCHANGE, then the old one is removed), so a reader sees the old report or the new one,
 // never a mix, and the folder holds only the current run's files. An interrupted run leaves the old report and a
 // temporary folder that the signal handler or the next run removes.
+//
+// Only a folder stipple-validate made is ever replaced: every report holds the marker file kReportMarker, and a
+// folder without it (a website with an index.html, a home folder) is refused whole and left untouched. A target
+// that is a symlink to a report folder is resolved: the report is published into the folder it points to, and
+// the link stays.
 #pragma once
 
 #include <string>
@@ -10,10 +15,13 @@
 
 namespace stipple::validation {
 
+// The file every report folder holds: what makes a folder one stipple-validate may replace.
+inline constexpr const char* kReportMarker = ".stipple-report";
+
 class ReportStaging {
 public:
-    // Throws std::runtime_error when `target` exists but is not a report folder (an empty folder, or one with
-    // index.html or results.json at its top), or when the temporary folder cannot be created beside it.
+    // Throws std::runtime_error when `target` exists but is not a report folder (see isReplaceableReportFolder),
+    // is a symlink to anything else, or when the temporary folder cannot be created beside it.
     explicit ReportStaging(const std::string& target);
     // The folder to write the report into.
     const std::string& dir() const { return temp_.path(); }
@@ -25,7 +33,12 @@ private:
     render::TempPath temp_;
 };
 
-// True when `dir` may be replaced by a report: missing, empty, or holding index.html or results.json.
+// True when `dir` may be replaced by a report: missing, an empty folder, or a folder holding kReportMarker as a
+// regular file (not followed if `dir` is a symlink: resolve it first).
 bool isReplaceableReportFolder(const std::string& dir);
+
+// `dir` itself, or, when it is a symlink, the folder it resolves to (absolute). Throws std::runtime_error for a
+// symlink that does not resolve to a folder.
+std::string resolveReportTarget(const std::string& dir);
 
 } // namespace stipple::validation
