@@ -130,6 +130,15 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
     // Use the entry only when everything verifies; otherwise say why and render it again.
     auto readCached = [&] {
         ref.cacheProblem.clear();
+        // Each part must be a regular file: a FIFO would block the read forever, a symlink could lead anywhere.
+        for (const std::string& part : {provenancePath, ref.imagePath, variancePath}) {
+            std::error_code ec;
+            const fs::file_status st = fs::symlink_status(part, ec);
+            if (fs::exists(st) && !fs::is_regular_file(st)) {
+                ref.cacheProblem = part + " is not a regular file";
+                return false;
+            }
+        }
         if (fs::exists(provenancePath)) {
             try {
                 Provenance p = parseProvenance(render::readFileBounded(provenancePath, 1 << 20, "cache provenance"));
