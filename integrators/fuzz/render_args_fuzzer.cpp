@@ -3,6 +3,7 @@
 // message; any other exception, a crash or a sanitizer report is a finding.
 #include "render_args.h"
 
+#include <stipple/render/input_limits.h>
 #include <stipple/testing/fuzz_arguments.h>
 
 #include <cstdint>
@@ -21,8 +22,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         fuzzRequire(a.options.spp <= (1u << 20));
         fuzzRequire(a.options.width >= 0 && a.options.width <= (1 << 15) && a.options.height >= 0 &&
                     a.options.height <= (1 << 15));
-        fuzzRequire(a.options.threads >= 0 && a.options.threads <= 4096);
-        fuzzRequire(a.options.maxDepth >= -1 && a.options.maxDepth <= 1000);
+        // Whatever the parser accepts, the renderer's own range check accepts too (one range per setting).
+        try {
+            checkRenderSettings(a.options.threads, a.options.width, a.options.height, a.options.maxDepth);
+        } catch (const std::invalid_argument&) {
+            fuzzRequire(false);
+        }
+        fuzzRequire(a.exposure >= -64 && a.exposure <= 64);
         fuzzRequire(a.output.empty() || a.output.size() >= 4);
     } catch (const UsageError& e) {
         fuzzRequire(e.what()[0] != '\0');

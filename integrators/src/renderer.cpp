@@ -76,7 +76,8 @@ std::string hashFiles(const std::vector<std::string>& files) {
 
 class ProgressBar {
 public:
-    ProgressBar(bool enabled, size_t total) : enabled_(enabled && isatty(2)), total_(total) {}
+    ProgressBar(bool enabled, size_t total)
+        : enabled_(enabled && isatty(2)), total_(total), start_(std::chrono::steady_clock::now()) {}
     void tick() {
         if (!enabled_) return;
         size_t d = ++done_;
@@ -84,7 +85,10 @@ public:
         int last = lastPct_.load();
         if (pct > last && lastPct_.compare_exchange_strong(last, pct)) {
             std::lock_guard<std::mutex> lock(mutex_);
-            std::fprintf(stderr, "\r\033[K%s %3d%%", progressBar(d, total_).c_str(), pct);
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+            std::fprintf(stderr, "\r\033[K%s %3d%% %s", progressBar(d, total_).c_str(), pct,
+                         progressEta(d, total_, elapsed).c_str());
             if (d == total_) std::fprintf(stderr, "\n");
             std::fflush(stderr);
         }
@@ -96,6 +100,7 @@ private:
     std::atomic<size_t> done_{0};
     std::atomic<int> lastPct_{-1};
     std::mutex mutex_;
+    std::chrono::steady_clock::time_point start_;
 };
 
 class SceneImpl final : public Scene {
@@ -112,6 +117,7 @@ public:
     double loadSeconds() const override { return loadSeconds_; }
     double buildSeconds() const override { return scene_.buildSeconds(); }
     uint64_t triangleCount() const override { return scene_.triangleCount(); }
+    size_t emitterCount() const override { return scene_.lights().size(); }
 
     std::string describeLayout(const RenderOptions& options) const override {
         Resolved r = resolveSettings(options);

@@ -97,6 +97,39 @@ BOOST_AUTO_TEST_CASE(render_options_beyond_the_budget_are_invalid_arguments) {
     BOOST_CHECK_THROW(scene->render(o), std::invalid_argument);
 }
 
+// Settings TBB's arena or the film cannot take are refused by the renderer itself, whoever sets them (65537
+// threads crashed inside TBB).
+BOOST_AUTO_TEST_CASE(render_settings_outside_their_ranges_are_invalid_arguments) {
+    fs::path p = freshDir("settings") / "quad.yaml";
+    writeText(p, std::string("name: q\n") + kHeader + "shapes:\n" + kQuad);
+    auto scene = Scene::load(p.string());
+    auto refused = [&](RenderOptions o, const std::string& what) {
+        o.spp = 1;
+        try {
+            scene->render(o);
+            BOOST_ERROR("rendered with " << what);
+        } catch (const std::invalid_argument& e) {
+            BOOST_TEST(std::string(e.what()).find(what) != std::string::npos, e.what());
+        }
+    };
+    RenderOptions o;
+    o.threads = 65537;
+    refused(o, "threads 65537 is outside [0, 1024]");
+    o.threads = -1;
+    refused(o, "threads -1 is outside [0, 1024]");
+    o = {};
+    o.width = -5;
+    refused(o, "width -5 is outside [0, 32768]");
+    o = {};
+    o.maxDepth = 1 << 20;
+    refused(o, "max depth 1048576 is outside [-1, 1000]");
+    o = {};
+    o.threads = limits::kMaxThreads;
+    o.width = o.height = 4;
+    o.spp = 1;
+    BOOST_CHECK_NO_THROW(scene->render(o));
+}
+
 BOOST_AUTO_TEST_CASE(bounded_read_stops_on_a_growing_file) {
     // A FIFO is refused before reading (it could be endless); a regular file is read whole.
     fs::path dir = freshDir("fifo");

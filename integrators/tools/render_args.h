@@ -22,6 +22,7 @@ struct RenderArgs {
     RenderOptions options;
     std::string scenePath, output; // output: empty means <safe scene name>.exr in the working folder
     bool printLayout = false;
+    bool quiet = false;        // -q / --quiet: no progress bar, no report lines
     bool help = false;         // -h / --help: print kRenderUsage and stop
     bool version = false;      // --version: print the version line and stop
     bool patternGiven = false; // --pattern: main checks the name against the loaded shim's

@@ -1,6 +1,5 @@
 // stipple-render: renders a scene file with a sample pattern from libstipple, writes a float EXR and a PNG.
-//   stipple-render <scene.yaml> [--pattern P] [--spp N] [--seed S] [--integrator I] [--width W] [--height H]
-//                  [--max-depth D] [--threads T] [--exposure E] [--shim PATH] [--print-layout] [-o out.exr]
+//   stipple-render <scene.yaml> [options] (render_args.cpp's kRenderUsage lists them with their defaults)
 // Exit codes: 0 success, 1 render/output failure, 2 bad arguments or a scene that cannot be loaded.
 #include <stipple/render/renderer.h>
 #include <stipple/render/temp_files.h>
@@ -20,6 +19,9 @@
 #include <sstream>
 #include <string>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 using namespace stipple::render;
 
 namespace {
@@ -30,6 +32,12 @@ std::string fmt(double v, int precision = 3) {
     o.precision(precision);
     o << v;
     return o.str();
+}
+
+// Where --quiet sends the report lines.
+std::ostream& quietStream() {
+    static std::ostream nowhere(nullptr);
+    return nowhere;
 }
 
 } // namespace
@@ -96,23 +104,47 @@ int main(int argc, char** argv) {
             std::cout << scene->describeLayout(options);
             return 0;
         }
-        options.progress = true;
-        std::cout << "scene " << scene->name() << " (" << scene->triangleCount() << " triangles, hash "
-                  << scene->contentHash() << ")\n"
-                  << "load " << fmt(scene->loadSeconds()) << " s, BVH build " << fmt(scene->buildSeconds()) << " s\n";
+        // Never a path from inside the scene file: its name, made safe, in the working folder.
+        if (output.empty()) output = safeOutputStem(scene->name()) + ".exr";
+        const std::string png = std::filesystem::path(output).replace_extension(".png").string();
+        std::error_code same;
+        for (const std::string& out : {output, png})
+            if (std::filesystem::equivalent(out, scenePath, same))
+                throw std::invalid_argument("output " + out + " is the scene file " + scenePath +
+                                            "; choose another -o");
+        // Before the render, not after it: the folder takes a file and the preview's colour transform ($OCIO)
+        // works. A 1-pixel PNG is written beside the output and removed.
+        try {
+            TempPath probe(png);
+            // open(2) first: its errno says why (no such folder, read-only, no space) where OIIO's message does not.
+            const int fd = ::open(probe.path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+            if (fd < 0) throw std::runtime_error("cannot create a file beside it: " + std::string(std::strerror(errno)));
+            ::close(fd);
+            writePng(probe.path(), Image{1, 1, {0.5f, 0.5f, 0.5f}}, exposure);
+        } catch (const std::exception& e) {
+            std::cerr << "stipple-render: output " << output << " cannot be written (checked before rendering): "
+                      << e.what() << fullDiskNote(output) << "\n";
+            return 1;
+        }
+        if (scene->emitterCount() == 0)
+            std::cerr << "stipple-render: warning: scene " << scene->name()
+                      << " has no emitter (no shape with an emission); the render will be black\n";
+        options.progress = !args.quiet;
+        std::ostream& info = args.quiet ? quietStream() : std::cout;
+        info << "scene " << scene->name() << " (" << scene->triangleCount() << " triangles, hash "
+             << scene->contentHash() << ")\n"
+             << "load " << fmt(scene->loadSeconds()) << " s, BVH build " << fmt(scene->buildSeconds()) << " s\n";
         RenderResult r = scene->render(options);
         const std::string& integrator = r.settings.integrator;
         const uint32_t spp = r.settings.spp;
-        std::cout << "layout:\n" << r.layout;
-        std::cout << "render " << fmt(r.renderSeconds) << " s (" << r.image.width << "x" << r.image.height << ", "
-                  << spp << " spp, " << options.pattern << ", " << integrator << ")\n"
-                  << "sampler " << fmt(r.samplerSeconds, 4) << " s ("
-                  << fmt(r.renderSeconds > 0 ? 100 * r.samplerSeconds / r.renderSeconds : 0, 1) << "% of render)\n"
-                  << "rays " << r.raysTraced << " (" << fmt(r.raysTraced / std::max(1e-9, r.renderSeconds) / 1e6, 2)
-                  << " Mrays/s)\n"
-                  << "non-finite samples " << r.nonFiniteSamples << "\n";
-        // Never a path from inside the scene file: its name, made safe, in the working folder.
-        if (output.empty()) output = safeOutputStem(scene->name()) + ".exr";
+        info << "layout:\n" << r.layout;
+        info << "render " << fmt(r.renderSeconds) << " s (" << r.image.width << "x" << r.image.height << ", " << spp
+             << " spp, " << options.pattern << ", " << integrator << ")\n"
+             << "sampler " << fmt(r.samplerSeconds, 4) << " s ("
+             << fmt(r.renderSeconds > 0 ? 100 * r.samplerSeconds / r.renderSeconds : 0, 1) << "% of render)\n"
+             << "rays " << r.raysTraced << " (" << fmt(r.raysTraced / std::max(1e-9, r.renderSeconds) / 1e6, 2)
+             << " Mrays/s)\n"
+             << "non-finite samples " << r.nonFiniteSamples << "\n";
         ImageMetadata meta{
             {"scene", scene->name()},
             {"content_hash", scene->contentHash()},
@@ -126,8 +158,8 @@ int main(int argc, char** argv) {
             {"non_finite_samples", std::to_string(r.nonFiniteSamples)},
             {"renderer", rendererIdentity()},
         };
-        std::string png = publishRenderOutputs(output, r.image, meta, exposure);
-        std::cout << "wrote " << output << " and " << png << "\n";
+        publishRenderOutputs(output, r.image, meta, exposure);
+        info << "wrote " << output << " and " << png << "\n";
         return 0;
     } catch (const std::invalid_argument& e) {
         std::cerr << "stipple-render: " << e.what() << "\n";
@@ -136,7 +168,7 @@ int main(int argc, char** argv) {
         std::cerr << "stipple-render: out of memory while rendering " << scenePath << "\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "stipple-render: " << e.what() << "\n";
+        std::cerr << "stipple-render: " << e.what() << fullDiskNote(output.empty() ? "." : output) << "\n";
         return 1;
     }
 }

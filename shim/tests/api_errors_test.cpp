@@ -3,6 +3,8 @@
 #define BOOST_TEST_MODULE api_errors
 #include "sampler_fixture.h"
 
+#include <stipple/stipple.hpp>
+
 #include <cstring>
 #include <thread>
 
@@ -312,4 +314,19 @@ BOOST_AUTO_TEST_CASE(stream_calls_check_their_arguments) {
     stipple_dimension_info info{};
     info.struct_size = sizeof info;
     expectError(stipple_sampler_get_dimension_info(s.get(), 0, &info), STIPPLE_ERROR_OUT_OF_RANGE, "dimension is 0");
+}
+
+// The C++ kit's call-order cursor: the counter's last value is getPixel2D's stream, so the counter stops before it.
+BOOST_AUTO_TEST_CASE(cursor_counter_stops_before_the_pixel_stream) {
+    const stipple::Sampler sampler("stratified", 4, 1);
+    stipple::PixelSampleCursor cursor(sampler);
+    cursor.start({3, 5}, 1, stipple::PixelSampleCursor::kPixelDimension - 1);
+    BOOST_CHECK_NO_THROW(cursor.get1D()); // the last dimension the counter may use
+    try {
+        cursor.get2D();
+        BOOST_ERROR("the counter reached getPixel2D's dimension");
+    } catch (const stipple::Error& e) {
+        BOOST_CHECK_EQUAL(e.status(), STIPPLE_ERROR_OUT_OF_RANGE);
+        BOOST_CHECK(std::string(e.what()).find("getPixel2D") != std::string::npos);
+    }
 }

@@ -3,6 +3,7 @@
 // message; any other exception, a crash or a sanitizer report is a finding.
 #include "cli_args.h"
 
+#include <stipple/render/input_limits.h>
 #include <stipple/testing/fuzz_arguments.h>
 
 #include <cstdint>
@@ -18,7 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Args a = parseArgs(argv);
         if (a.help || a.version) return 0; // both stop before the arguments a run needs
         fuzzRequire(!a.matrix.empty());
-        fuzzRequire(a.threads >= 0 && a.threads <= 1024);
+        // A path given empty is a usage error, never "the default" (or the working folder).
+        fuzzRequire(!a.out.empty());
+        for (const std::string& dir : a.merge) fuzzRequire(!dir.empty());
+        fuzzRequire(a.threads >= 0 && a.threads <= stipple::render::limits::kMaxThreads);
         fuzzRequire(a.shardCount >= 1 && a.shardIndex >= 1 && a.shardIndex <= a.shardCount);
         fuzzRequire(a.merge.empty() || (a.shardCount == 1 && !a.referencesOnly));
     } catch (const UsageError& e) {

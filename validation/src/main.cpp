@@ -181,7 +181,11 @@ int main(int argc, char** argv) {
         std::cerr << "stipple-validate: out of memory\n";
         return kExitError;
     } catch (const std::exception& e) {
-        std::cerr << "stipple-validate: " << e.what() << "\n";
+        // A full disk often reaches here without errno (OIIO, gnuplot): name it when the report's or the cache's
+        // file system is out of space.
+        std::string note = stipple::render::fullDiskNote(args.out);
+        if (note.empty()) note = stipple::render::fullDiskNote(cache);
+        std::cerr << "stipple-validate: " << e.what() << note << "\n";
         return kExitError;
     }
 }

@@ -17,6 +17,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 namespace stipple::render {
@@ -199,6 +200,18 @@ size_t sweepStaleTemps(const std::string& dir) {
         if (!isPublishJournalName(p.filename().string()) && fs::remove_all(p, rec) > 0 && !rec) ++removed;
     }
     return removed;
+}
+
+std::string fullDiskNote(const std::string& path) {
+    std::error_code ec;
+    fs::path dir = fs::absolute(path, ec);
+    while (!dir.empty() && !fs::is_directory(dir, ec) && dir != dir.parent_path()) dir = dir.parent_path();
+    struct statvfs st {};
+    if (dir.empty() || ::statvfs(dir.c_str(), &st) != 0) return {};
+    const unsigned long long free = (unsigned long long)st.f_bavail * st.f_frsize;
+    if (free >= (1ull << 20)) return {};
+    return " (no space left on device? " + std::to_string(free) + " bytes free on the file system of " +
+           dir.string() + ")";
 }
 
 TempPath::TempPath(const std::string& target) : path_(tempPathBeside(target)) {

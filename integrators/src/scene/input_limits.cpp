@@ -48,8 +48,9 @@ Box checkGroup(const ShapeGroup& g) {
 } // namespace
 
 std::string beyondCoordinateLimit(const Vec3& p) {
+    // Compared as floats: 1e12 read into a float is 999999995904, which a double comparison would let through.
     for (float v : {p.x, p.y, p.z})
-        if (!(std::fabs(v) < limits::kMaxCoordinate))
+        if (!(std::fabs(v) < float(limits::kMaxCoordinate)))
             return "has coordinate " + show(v) + ", beyond the limit of +-" + show(limits::kMaxCoordinate) +
                    " that the ray tracer can represent";
     return {};

@@ -7,6 +7,7 @@
 
 #include <stipple/yaml/strict_yaml.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -221,8 +222,10 @@ void Loader::parseCamera(const yaml::Node& n) {
     if (lengthSquared(cross(c.lookAt - c.position, c.up)) == 0)
         fail(n["up"] ? n["up"] : n, "up", "a direction not parallel to the view direction");
     if (c.type == "thinlens") {
+        // Below the coordinate limit, as every length the ray tracer sees (|x| < kMaxCoordinate).
         c.lensRadius = numberIn(require(n, "lens_radius", "a thinlens camera"), "lens_radius", 0,
-                                limits::kMaxCoordinate, "in [0, " + fmt(limits::kMaxCoordinate) + "]");
+                                std::nextafter(double(float(limits::kMaxCoordinate)), 0.0),
+                                "in [0, " + fmt(limits::kMaxCoordinate) + ")");
         c.focusDistance =
             numberIn(require(n, "focus_distance", "a thinlens camera"), "focus_distance", 1e-6, 1e30, "> 0");
     } else {
@@ -350,8 +353,13 @@ void Loader::include(const yaml::Node& n) {
     std::string saved = file_;
     file_ = path;
     stack_.push_back(canonical);
-    if (!root.IsMap()) throw SceneError(where(root) + ": an included file must be a map with objects: and shapes:");
-    checkKeys(root, "an included file", {"objects", "shapes"});
+    // Any readable file can be named here: what is not a scene fragment is refused without quoting its text.
+    const std::string notFragment = ": an included file must be a map with only objects: and shapes: (this file is "
+                                    "not a scene fragment)";
+    if (!root.IsMap()) throw SceneError(where(root) + notFragment);
+    for (const auto& kv : root)
+        if (!kv.first.IsScalar() || (kv.first.ScalarView() != "objects" && kv.first.ScalarView() != "shapes"))
+            throw SceneError(where(kv.first) + notFragment);
     if (root["objects"]) parseObjects(root["objects"]);
     if (root["shapes"]) parseShapeList(root["shapes"], desc_.shapes, false, "shapes");
     stack_.pop_back();

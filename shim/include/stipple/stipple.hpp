@@ -163,6 +163,11 @@ public:
 private:
     template <size_t Arity>
     std::array<float, Arity> next() {
+        // The counter never reaches getPixel2D's own stream: that would return the film position's values again.
+        if (dimension_ == kPixelDimension)
+            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "PixelSampleCursor: the call counter reached dimension " +
+                                                        std::to_string(kPixelDimension) +
+                                                        ", which is getPixel2D's stream");
         std::array<float, Arity> v{};
         sampler_->stream(pixel_, sampleIndex_, dimension_++, uint32_t(Arity), v.data());
         return v;

@@ -86,6 +86,7 @@ public:
     virtual double loadSeconds() const = 0;      // parsing + geometry generation
     virtual double buildSeconds() const = 0;     // Embree BVH build
     virtual uint64_t triangleCount() const = 0;  // after instancing
+    virtual size_t emitterCount() const = 0;     // lights (emitting shapes); 0: every render is black
 
     // The options with every "scene default" (zero, empty, -1) replaced by the scene's value: what a render with
     // them uses, and what a cache keyed on a render must name. Resolved here only.

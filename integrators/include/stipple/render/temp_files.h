@@ -33,6 +33,11 @@ bool isOwnFile(const std::string& path, bool folderToo, std::string& why);
 // The one warning for something a sweep or a journal recovery leaves alone: "warning: left PATH alone: WHY".
 void warnLeftAlone(const std::string& path, const std::string& why);
 
+// When the file system holding `path` (or its nearest existing parent) has less than 1 MiB free: a note for an
+// error message, " (no space left on device? N bytes free on the file system of DIR)"; otherwise empty. Libraries
+// that write files (OIIO) often lose errno on a full disk; this names the likely cause after a failed write.
+std::string fullDiskNote(const std::string& path);
+
 // A registered temporary: removed (file or folder) on destruction unless released after its rename.
 class TempPath {
 public:
