@@ -15,22 +15,48 @@ sharding: all patterns of one group run in one task), then the wall time of an a
 threads each, by replaying the shard assignment (group g goes to task g mod n + 1).
 
 usage: estimate-cost.py MATRIX --bin STIPPLE_VALIDATE [--divisor 32] [--work DIR] [--tasks 32] [--threads 2]
+Exit status: 0 the estimate, 2 a bad argument or matrix, 3 a sample run of stipple-validate failed.
 """
-import argparse, json, os, pathlib, resource, subprocess, sys, time
+import argparse, json, os, pathlib, re, resource, subprocess, sys, time
 
 import yaml
+
+
+def fail(status, message):
+    print(f"estimate-cost: {message}", file=sys.stderr)
+    sys.exit(status)
+
+
+def count(lo, hi):
+    def parse(text):
+        try:
+            v = int(text, 10)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer in [{lo}, {hi}], got '{text}'")
+        if not lo <= v <= hi:
+            raise argparse.ArgumentTypeError(f"expected an integer in [{lo}, {hi}], got '{text}'")
+        return v
+    return parse
+
 
 ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("matrix")
 ap.add_argument("--bin", required=True)
-ap.add_argument("--divisor", type=int, default=32)
+ap.add_argument("--divisor", type=count(1, 4096), default=32)
 ap.add_argument("--work", default="cost-sample")
-ap.add_argument("--tasks", type=int, default=32)
-ap.add_argument("--threads", type=int, default=2)
-a = ap.parse_args()
+ap.add_argument("--tasks", type=count(1, 10000), default=32)
+ap.add_argument("--threads", type=count(1, 1024), default=2)
+a = ap.parse_args()  # exits 2 with the option named
 
 matrix_path = pathlib.Path(a.matrix).resolve()
-m = yaml.safe_load(matrix_path.read_text())
+try:
+    m = yaml.safe_load(matrix_path.read_text())
+except (OSError, UnicodeDecodeError, yaml.YAMLError) as e:
+    fail(2, f"{a.matrix}: cannot read the matrix: {e}")
+if not isinstance(m, dict) or not all(k in m for k in ("scenes", "patterns", "spp", "seeds")):
+    fail(2, f"{a.matrix}: not a matrix (a map with scenes, patterns, spp and seeds)")
+if not (os.path.isfile(a.bin) and os.access(a.bin, os.X_OK)):
+    fail(2, f"--bin {a.bin}: not an executable file")
 work = pathlib.Path(a.work).resolve()
 work.mkdir(parents=True, exist_ok=True)
 seeds = m["seeds"] if isinstance(m["seeds"], list) else list(range(1, int(m["seeds"]) + 1))
@@ -41,17 +67,23 @@ ref_spp_default = int(ref.get("spp", 1024))
 sample_ref_spp = 4 * spps[-1]
 
 scenes = []
-for entry in m["scenes"]:
+for index, entry in enumerate(m["scenes"]):
     e = {"file": entry} if isinstance(entry, str) else dict(entry)
     path = (matrix_path.parent / e["file"]).resolve()
-    name = e.get("name", path.stem)
-    render = (yaml.safe_load(path.read_text()).get("render") or {})
+    name = str(e.get("name", path.stem))
+    try:
+        render = (yaml.safe_load(path.read_text()) or {}).get("render") or {}
+    except (OSError, UnicodeDecodeError, yaml.YAMLError, AttributeError) as err:
+        fail(2, f"{a.matrix}: scene {name}: cannot read {path}: {err}")
     w, h = int(e.get("width", render.get("width"))), int(e.get("height", render.get("height")))
     sw, sh = max(1, round(w / a.divisor)), max(1, round(h / a.divisor))
     sample = {"file": str(path), "name": name, "width": sw, "height": sh}
     for k in ("integrator", "max_depth"):
         if k in e: sample[k] = e[k]
-    scenes.append({"name": name, "w": w, "h": h, "sw": sw, "sh": sh, "sample": sample,
+    # The files of the sample go inside --work under a name of plain characters, whatever the scene is called
+    # ("../x" must not write outside it).
+    stem = f"{index:03d}-" + (re.sub(r"[^A-Za-z0-9_-]", "_", name)[:64] or "scene")
+    scenes.append({"name": name, "stem": stem, "w": w, "h": h, "sw": sw, "sh": sh, "sample": sample,
                    "ref_spp": int(e.get("reference_spp", ref_spp_default))})
 
 print(f"sample of {matrix_path.name}: every cell at 1/{a.divisor} of each side, seeds {seeds[:4]}, --threads 1; "
@@ -61,19 +93,29 @@ for s in scenes:
     sample = {"name": f"cost-{s['name']}", "scenes": [s["sample"]], "patterns": m["patterns"], "spp": spps,
               "seeds": seeds[:4], "reference": {"pattern": ref.get("pattern", "independent"), "spp": sample_ref_spp,
                                                 "seed": int(ref.get("seed", 1000003))}}
-    mp = work / f"{s['name']}.yaml"
+    mp = work / f"{s['stem']}.yaml"
     mp.write_text(yaml.safe_dump(sample, sort_keys=False))
-    out = work / s["name"]
+    out = work / s["stem"]
+    # An earlier sample's results must never stand in for this one's.
+    stale = out / "results.json"
+    if stale.is_file() and not stale.is_symlink():
+        stale.unlink()
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.monotonic()
-    subprocess.run([a.bin, str(mp), "-o", str(out), "--cache", str(work / "cache"), "--threads", "1"],
-                   check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    run = subprocess.run([a.bin, str(mp), "-o", str(out), "--cache", str(work / "cache"), "--threads", "1"],
+                         check=False, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="replace")
     wall = time.monotonic() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    r = json.loads((out / "results.json").read_text())
+    if run.returncode != 0:  # the sample has no checks: anything but 0 is a failed run
+        tail = "\n".join(run.stderr.strip().splitlines()[-5:])
+        fail(3, f"the sample of scene {s['name']} failed: {a.bin} exited {run.returncode}\n{tail}")
+    try:
+        r = json.loads((out / "results.json").read_text())
+    except (OSError, ValueError) as err:
+        fail(3, f"the sample of scene {s['name']} left no readable results.json: {err}")
     info = r["scenes"][0]
-    cpu_per_wall = min(1.0, cpu / wall)
+    cpu_per_wall = min(1.0, cpu / wall) if wall > 0 else 1.0
     scale = (s["w"] * s["h"]) / (s["sw"] * s["sh"])
     cell = {}  # (pattern, spp) -> CPU seconds of one full-size render
     for row in r["rows"]:

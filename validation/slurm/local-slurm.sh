@@ -13,7 +13,11 @@
 #   stop       stops the daemons this script started (their pid files in STATE_DIR); safe to repeat
 #   status     the daemons' pids and `sinfo`
 # Ports: $STIPPLE_SLURM_PORT (slurmctld; slurmd uses the next one), default 6817.
-# Exit status: 0 done, 1 could not start (the reason and the daemons' log tails on stderr), 2 bad usage.
+# STATE_DIR is this script's alone: start creates it (or reuses one it created: the marker file
+# .local-slurm-state) and refuses any other existing folder; stop and status act only on such a folder. Inside it
+# only the files named here are written or removed.
+# Exit status: 0 done, 1 could not start (the reason and the daemons' log tails on stderr), 2 bad usage or a
+# STATE_DIR this script did not create.
 set -euo pipefail
 
 cmd=${1:-}
@@ -26,6 +30,20 @@ conf=$state/slurm.conf
 run=/tmp/stipple-slurm-$(printf %s "$state" | md5sum | cut -c1-12)
 
 die() { echo "local-slurm: $*" >&2; exit 1; }
+usage_error() { echo "local-slurm: $*" >&2; exit 2; }
+marker=$state/.local-slurm-state
+
+# A folder made by this script, or none yet (only `start` may create it).
+own_state() { # create?
+    if [ ! -e "$state" ] && [ ! -L "$state" ] && [ "$1" = create ]; then
+        mkdir -p "$(dirname "$state")" && mkdir -m 700 "$state" || die "cannot create $state"
+        echo "state folder of validation/slurm/local-slurm.sh: start, stop and status act on it" > "$marker"
+        return 0
+    fi
+    [ -d "$state" ] && [ ! -L "$state" ] && [ -f "$marker" ] && [ ! -L "$marker" ] && [ -O "$marker" ] \
+        || usage_error "$state is not a state folder made by local-slurm.sh (no $marker of this user); refusing to" \
+            "touch it (give a new or empty STATE_DIR)"
+}
 
 install_packages() {
     local missing=() p
@@ -68,8 +86,10 @@ stop() {
 logs() {
     local f
     for f in munged.log slurmctld.log slurmd.log; do
-        [ -s "$state/$f" ] && { echo "--- $state/$f (last lines)"; tail -n 15 "$state/$f"; }
+        if [ -s "$state/$f" ]; then echo "--- $state/$f (last lines)"; tail -n 15 "$state/$f"
+        else echo "--- $state/$f: not written (the daemon failed before logging)"; fi
     done >&2
+    return 0
 }
 
 write_config() {
@@ -117,6 +137,7 @@ CONF
 }
 
 start() {
+    own_state create
     [ "$(id -u)" -eq 0 ] || die "must run as root (slurmd starts jobs as their users; munged and the spool need root)"
     install_packages
     for b in munged slurmctld slurmd sinfo sbatch scontrol; do
@@ -125,12 +146,10 @@ start() {
     if pid_alive "$state/slurmctld.pid" || pid_alive "$state/slurmd.pid" || pid_alive "$state/munged.pid"; then
         die "daemons of $state are running already (local-slurm.sh stop $state first)"
     fi
-    mkdir -p "$state"
-    chmod 700 "$state"
     rm -rf "$state/ctld" "$run"
     mkdir -p "$state/ctld" "$run/spool" "$run/munge"
     chmod 700 "$run" "$run/munge"
-    rm -f "$state"/*.log
+    rm -f "$state/munged.log" "$state/slurmctld.log" "$state/slurmd.log"
     # A key of our own, so this MUNGE needs nothing from /etc/munge.
     [ -s "$state/munge.key" ] || { dd if=/dev/urandom of="$state/munge.key" bs=1024 count=1 status=none; }
     chmod 400 "$state/munge.key"
@@ -177,7 +196,7 @@ status() {
 
 case "$cmd" in
     start) start ;;
-    stop) stop ;;
-    status) status ;;
+    stop) if [ -e "$state" ] || [ -L "$state" ]; then own_state existing; stop; fi ;;
+    status) own_state existing; status ;;
     *) echo "usage: local-slurm.sh start|stop|status [STATE_DIR]" >&2; exit 2 ;;
 esac
