@@ -8,6 +8,7 @@
 #include "test_support.h"
 
 #include <stipple/render/input_limits.h>
+#include <stipple/render/progress_bar.h>
 
 #include <fstream>
 
@@ -128,6 +129,15 @@ BOOST_AUTO_TEST_CASE(render_settings_outside_their_ranges_are_invalid_arguments)
     o.width = o.height = 4;
     o.spp = 1;
     BOOST_CHECK_NO_THROW(scene->render(o));
+}
+
+// The estimate beside the render's progress bar: the time left at the rate so far.
+BOOST_AUTO_TEST_CASE(progress_eta_is_the_time_left_at_the_rate_so_far) {
+    BOOST_TEST(progressEta(0, 100, 5.0) == "ETA ?");
+    BOOST_TEST(progressEta(1, 4, 10.0) == "ETA 0m30s");
+    BOOST_TEST(progressEta(10, 100, 60.0) == "ETA 9m00s");
+    BOOST_TEST(progressEta(1, 1000, 10.0) == "ETA 2h46m");
+    BOOST_TEST(progressEta(100, 100, 60.0) == "done");
 }
 
 BOOST_AUTO_TEST_CASE(bounded_read_stops_on_a_growing_file) {

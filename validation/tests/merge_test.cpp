@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <unistd.h>
 
 #include "merge.h"
@@ -31,8 +32,10 @@ struct Shards {
     }
     ~Shards() { fs::remove_all(dir); }
     // A shard folder holding the rows (pattern, seed) given.
+    // `edit` changes each row after it is made as a measurement would make it.
     std::string shard(const std::string& name, const std::vector<std::pair<std::string, uint64_t>>& rows,
-                      const std::string& version = "stipple-render 1") {
+                      const std::string& version = "stipple-render 1",
+                      const std::function<void(ResultRow&)>& edit = [](ResultRow&) {}) {
         const fs::path d = dir / name;
         fs::create_directories(d);
         Results r;
@@ -40,6 +43,7 @@ struct Shards {
         r.rendererVersion = version;
         SceneInfo info;
         info.name = "box";
+        info.width = info.height = 16;
         r.scenes = {info};
         for (const auto& [pattern, seed] : rows) {
             ResultRow row;
@@ -47,7 +51,11 @@ struct Shards {
             row.pattern = pattern;
             row.spp = 4;
             row.seed = seed;
+            row.width = row.height = 16;
             row.rms = 0.5 + double(seed) / 8;
+            row.mse = row.rms * row.rms;
+            row.renderSeconds = 0.01;
+            edit(row);
             r.rows.push_back(row);
         }
         SceneFingerprint box;
@@ -103,4 +111,25 @@ BOOST_AUTO_TEST_CASE(missing_rows_are_an_error) {
     BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a}, s.out()), std::runtime_error, [](const auto& e) {
         return mentions(e, "1 cell × seed rows") && mentions(e, "box stratified 4 spp seed 2");
     });
+}
+
+// A shard's rows are input: a value no measurement gives is an error naming the folder, the row and the value.
+BOOST_AUTO_TEST_CASE(rows_no_measurement_gives_are_refused) {
+    const std::vector<std::pair<std::string, std::function<void(ResultRow&)>>> cases = {
+        {"rms -0.5 is not a finite value", [](ResultRow& r) { r.rms = -0.5; }},
+        {"is not the square root of mse", [](ResultRow& r) { r.mse = 1e300; }},
+        {"mse -1 is not a finite value", [](ResultRow& r) { r.mse = -1; }},
+        {"render_seconds -1 is not a time", [](ResultRow& r) { r.renderSeconds = -1; }},
+        {"cpu_seconds 1e+12 is not a time", [](ResultRow& r) { r.cpuSeconds = 1e12; }},
+        {"size 32x16 is not the scene's 16x16", [](ResultRow& r) { r.width = 32; }},
+        {"region values for 1 regions; the scene has 0", [](ResultRow& r) { r.regionMse = {0.1}; }},
+    };
+    for (const auto& [message, edit] : cases) {
+        Shards s;
+        const std::string a = s.shard("a", {{"stratified", 2}, {"independent", 1}}, "stipple-render 1", edit);
+        const std::string b = s.shard("b", {{"stratified", 1}, {"independent", 2}});
+        BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error, [&](const auto& e) {
+            return mentions(e, a + "/results.json: box") && mentions(e, message);
+        });
+    }
 }

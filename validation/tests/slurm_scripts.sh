@@ -96,9 +96,10 @@ timeout 120 python3 "$slurm/estimate-cost.py" "$work/escape.yaml" --bin "$valida
 echo "ok: a scene named ../../escape stays inside --work"
 
 # ---- local-slurm.sh -----------------------------------------------------------------------------------------
-# Stand-ins for the daemons that fail at once: whatever the script does, no real daemon starts here.
+# A stand-in for munged that fails at once: whatever the script does, no real daemon starts here (the others
+# start only after munged).
 mkdir -p "$work/nodaemons"
-for d in munged slurmctld slurmd; do printf '#!/bin/sh\nexit 1\n' > "$work/nodaemons/$d"; chmod +x "$work/nodaemons/$d"; done
+for d in munged; do printf '#!/bin/sh\nexit 1\n' > "$work/nodaemons/$d"; chmod +x "$work/nodaemons/$d"; done
 mkdir -p "$work/mine" && echo keep > "$work/mine/notes.log" && chmod 755 "$work/mine"
 expect "start on a folder it did not create" 2 "is not a state folder made by local-slurm.sh" \
   env PATH="$work/nodaemons:$PATH" bash "$slurm/local-slurm.sh" start "$work/mine"
