@@ -96,6 +96,14 @@ struct Parser {
         if (v < 1 || v > (1ll << 24)) fail(node, what + " must be in [1, 16777216], got " + node.Scalar());
         return uint32_t(v);
     }
+    // An image side: the renderer's range (render::checkRenderSettings refuses the same).
+    int imageSide(const yaml::Node& node, const std::string& what) const {
+        long long v = get<long long>(node, what);
+        if (v < 1 || v > render::limits::kMaxImageSide)
+            fail(node, what + " must be in [1, " + std::to_string(render::limits::kMaxImageSide) + "], got " +
+                           node.Scalar());
+        return int(v);
+    }
     int dimension(const yaml::Node& node, const std::string& what) const {
         long long v = get<long long>(node, what);
         if (v < 1 || v > 16384) fail(node, what + " must be in [1, 16384], got " + node.Scalar());
@@ -138,8 +146,8 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                        "a scene entry");
             ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
             if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
-            if (s["width"]) ms.width = P.dimension(s["width"], "width");
-            if (s["height"]) ms.height = P.dimension(s["height"], "height");
+            if (s["width"]) ms.width = P.imageSide(s["width"], "width");
+            if (s["height"]) ms.height = P.imageSide(s["height"], "height");
             if (s["integrator"]) {
                 ms.integrator = P.get<std::string>(s["integrator"], "integrator");
                 const auto& known = P.vocabulary.integrators;
