@@ -3,9 +3,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -14,13 +16,51 @@ namespace stipple::validation {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// True when every entry of `dir` is a regular file with one of `extensions` (no folders, no symlinks).
+bool onlyFilesEndingIn(const fs::path& dir, const std::vector<std::string>& extensions) {
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        const std::string ext = it->path().extension().string();
+        if (!fs::is_regular_file(it->symlink_status(ec)) ||
+            std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
+            return false;
+    }
+    return !ec;
+}
+
+// A report an earlier version wrote (before the marker): exactly a report's files and nothing else.
+bool isEarlierReport(const fs::path& dir) {
+    static const std::vector<std::string> files = {"index.html", "results.json", "results.csv", "cells.csv"};
+    std::error_code ec;
+    bool index = false, results = false;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const fs::file_status st = it->symlink_status(ec);
+        if (std::find(files.begin(), files.end(), name) != files.end() && fs::is_regular_file(st)) {
+            index |= name == "index.html";
+            results |= name == "results.json";
+        } else if (name == "crops" && fs::is_directory(st)) {
+            if (!onlyFilesEndingIn(it->path(), {".png"})) return false;
+        } else if (name == "plots" && fs::is_directory(st)) {
+            if (!onlyFilesEndingIn(it->path(), {".png", ".svg", ".dat", ".gp", ".log"})) return false;
+        } else {
+            return false;
+        }
+    }
+    return !ec && index && results;
+}
+
+} // namespace
+
 bool isReplaceableReportFolder(const std::string& dir) {
     std::error_code ec;
     const fs::file_status st = fs::symlink_status(dir, ec);
     if (!fs::exists(st)) return true;
     if (!fs::is_directory(st)) return false;
     if (fs::is_empty(dir, ec) && !ec) return true;
-    return fs::is_regular_file(fs::symlink_status(fs::path(dir) / kReportMarker, ec));
+    return fs::is_regular_file(fs::symlink_status(fs::path(dir) / kReportMarker, ec)) || isEarlierReport(dir);
 }
 
 std::string resolveReportTarget(const std::string& dir) {
@@ -45,8 +85,8 @@ ReportStaging::ReportStaging(const std::string& target)
         throw std::runtime_error("-o " + target + ": must name a report folder, not the working folder, a parent or /");
     if (!isReplaceableReportFolder(target_))
         throw std::runtime_error("-o " + target + ": exists and is not a report folder (not empty, no " +
-                                 kReportMarker + " that stipple-validate writes in each report); refusing to "
-                                 "replace it");
+                                 kReportMarker + " that stipple-validate writes in each report, and files a "
+                                 "report does not have); refusing to replace it");
     std::error_code ec;
     const fs::path parent = fs::absolute(temp_.path()).parent_path();
     fs::create_directories(parent, ec);

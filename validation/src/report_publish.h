@@ -3,8 +3,9 @@
 // never a mix, and the folder holds only the current run's files. An interrupted run leaves the old report and a
 // temporary folder that the signal handler or the next run removes.
 //
-// Only a folder stipple-validate made is ever replaced: every report holds the marker file kReportMarker, and a
-// folder without it (a website with an index.html, a home folder) is refused whole and left untouched. A target
+// Only a folder stipple-validate made is ever replaced: every report holds the marker file kReportMarker (or,
+// written by an earlier version, exactly a report's files), and any other folder (a website with an index.html,
+// a home folder) is refused whole and left untouched. A target
 // that is a symlink to a report folder is resolved: the report is published into the folder it points to, and
 // the link stays.
 #pragma once
@@ -33,8 +34,9 @@ private:
     render::TempPath temp_;
 };
 
-// True when `dir` may be replaced by a report: missing, an empty folder, or a folder holding kReportMarker as a
-// regular file (not followed if `dir` is a symlink: resolve it first).
+// True when `dir` may be replaced by a report: missing, an empty folder, a folder holding kReportMarker as a
+// regular file, or one an earlier version wrote (exactly a report's files: index.html, results.json, the CSVs,
+// crops/ of PNGs, plots/ of gnuplot's files). Not followed if `dir` is a symlink: resolve it first.
 bool isReplaceableReportFolder(const std::string& dir);
 
 // `dir` itself, or, when it is a symlink, the folder it resolves to (absolute). Throws std::runtime_error for a

@@ -42,6 +42,13 @@ rm -rf "$work/s1" "$work/s2"
 run -o "$work/s1" --shard 1/2 || { cat "$work/log"; die "shard 1"; }
 run -o "$work/s2" --shard 2/2 || { cat "$work/log"; die "shard 2"; }
 [ -f "$work/s1/.stipple-report" ] || fail "a report folder lacks its .stipple-report marker"
+# A report of an earlier version (no marker, exactly a report's files) is replaced; one file more and it is not.
+cp -r "$work/s1" "$work/old" && rm "$work/old/.stipple-report"
+run -o "$work/old" --shard 1/2 || { cat "$work/log"; fail "a report without the marker (an earlier version's) was refused"; }
+[ -f "$work/old/.stipple-report" ] || fail "the earlier report was not replaced"
+cp -r "$work/s1" "$work/old2" && rm "$work/old2/.stipple-report" && echo mine > "$work/old2/crops/notes.txt"
+expect2 "-o a report folder with a file no report has" "not a report folder" -o "$work/old2" --shard 1/2
+[ -f "$work/old2/crops/notes.txt" ] || fail "the extra file was removed"
 s1=$(snapshot "$work/s1")
 expect2 "--merge -o onto its own shard" "overlaps the shard folder" -o "$work/s1" --merge "$work/s1" "$work/s2"
 expect2 "--merge -o around its own shard" "overlaps the shard folder" -o "$work" --merge "$work/s1" "$work/s2"
