@@ -7,10 +7,12 @@
 #  - --merge copies only the crops the rows name, regular files only: a crop symlinked to a private file is
 #    not copied, a symlinked folder is skipped with a warning (no raw filesystem error);
 #  - --merge refuses rows no measurement could give (negative RMS, a time < 0, a size against the scene's);
-#  - another user's temporary beside the report folder is left alone and named in a warning (as root only).
+#  - another user's temporary beside the report folder is left alone and named in a warning (as root only);
+#  - a full disk under the report folder is named in the error (as root only: a small tmpfs).
 # usage: report_folder_guard.sh STIPPLE_VALIDATE MATRIX WORKDIR
 set -u
 bin=$1 matrix=$2 work=$3
+umount "$work/full" 2> /dev/null  # left mounted by an interrupted run
 rm -rf "$work" && mkdir -p "$work" || exit 1
 failed=0
 fail() { echo "FAILED: $*"; failed=1; }  # every case is tried, so a run lists all that fail
@@ -99,6 +101,19 @@ if [ "$(id -u)" -eq 0 ]; then
   rm -rf "$planted"
 else
   echo "skipped: the foreign-owner case needs root (to create a file owned by nobody)"
+fi
+
+# A full disk under the report folder is named (the writers' own messages do not say why), as root only.
+if [ "$(id -u)" -eq 0 ] && mkdir -p "$work/full" && mount -t tmpfs -o size=256k tmpfs "$work/full" 2> /dev/null; then
+  dd if=/dev/zero of="$work/full/filler" bs=4k count=62 status=none 2> /dev/null
+  run -o "$work/full/report"; rc=$?
+  [ $rc -eq 3 ] && grep -q "no space left on device? [0-9]* bytes free" "$work/log" \
+    || { cat "$work/log"; fail "a full disk is not named (exit $rc)"; }
+  [ ! -e "$work/full/report" ] && [ -z "$(ls -A "$work/full" | grep -v filler)" ] || fail "the full disk kept a half report"
+  echo "ok: a full disk: $(grep -o 'no space left on device?.*' "$work/log" | head -1)"
+  umount "$work/full"
+else
+  echo "skipped: the full-disk case needs root (to mount a small tmpfs)"
 fi
 
 # --opt=value and --quiet.
