@@ -37,7 +37,8 @@ def _installed_candidates():
         from . import _install_location
     except ImportError:
         return []
-    return [pathlib.Path(__file__).resolve().parent / _install_location.LIBRARY_DIR / LIBRARY_NAME]
+    return [pathlib.Path(os.path.normpath(pathlib.Path(__file__).resolve().parent / _install_location.LIBRARY_DIR /
+                                          LIBRARY_NAME))]
 
 
 def _build_tree_candidates():
