@@ -18,100 +18,105 @@ set -euo pipefail
 SPDX="SPDX-License-Identifier: Apache-2.0"
 COPYRIGHT="Copyright 2026 The stipple authors"
 
-mode=${1:-}
-root=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
-case $mode in --check | --fix | --list | --verify-fix) ;; *) sed -n '2,15p' "$0" >&2; exit 2 ;; esac
-cd "$root"
+# The whole script is one function, read by bash before it runs: --fix may rewrite this very file.
+main() {
+  mode=${1:-}
+  root=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
+  case $mode in --check | --fix | --list | --verify-fix) ;; *) sed -n '2,15p' "$0" >&2; exit 2 ;; esac
+  cd "$root"
 
-covered() {
-  local files
-  if git rev-parse --is-inside-work-tree >/dev/null 2>&1 && [ "$(git rev-parse --show-toplevel)" = "$(pwd -P)" ]; then
-    files=$(git ls-files --cached --others --exclude-standard)
-  else
-    files=$(find . -path ./.git -prune -o -path ./build -prune -o -path ./report -prune -o -type f -print |
-            sed 's|^\./||')
-  fi
-  grep -E '(\.(c|cpp|h|hpp|py|sh|cmake|in|supp)|(^|/)CMakeLists\.txt|(^|/)pyproject\.toml|^\.ci/run)$' <<<"$files" |
-    grep -vE '(^|/)fuzz/[^/]*(corpus|regressions)/|^shim/abi/' | sort || true
-}
-
-# The comment syntax of a file: "//", "/*" (C files written with block comments) or "#".
-syntax() {
-  case $1 in
-    *.c | *.cpp | *.h | *.hpp | *.h.in)
-      if head -n1 "$1" | grep -q '^/\*'; then echo '/*'; else echo '//'; fi ;;
-    *) echo '#' ;;
-  esac
-}
-
-has_header() { head -n 5 "$1" | grep -qF "$SPDX" && head -n 5 "$1" | grep -qF "$COPYRIGHT"; }
-
-add_header() {
-  local file=$1 open close
-  case $(syntax "$file") in
-    '//') open='// ' close='' ;;
-    '/*') open='/* ' close=' */' ;;
-    '#') open='# ' close='' ;;
-  esac
-  local tmp
-  tmp=$(mktemp)
-  awk -v a="$open$SPDX$close" -v b="$open$COPYRIGHT$close" -v prefix="${open% }" '
-    function header(next_line) {
-      print a; print b
-      if (next_line != "" && index(next_line, prefix) != 1) print ""
-    }
-    NR == 1 && /^#!/ { print; shebang = 1; next }
-    !done { header($0); done = 1 }
-    { print }
-    END { if (!done) { if (shebang || NR == 0) header("") } }
-  ' "$file" >"$tmp"
-  cat "$tmp" >"$file" # keeps the file's mode
-  rm -f "$tmp"
-}
-
-if [ "$mode" = --verify-fix ]; then
-  copy=$(mktemp -d)
-  trap 'rm -rf "$copy"' EXIT
-  covered | while IFS= read -r file; do mkdir -p "$copy/$(dirname "$file")"; cp -p "$file" "$copy/$file"; done
-  cp -r "$copy" "$copy.orig"
-  trap 'rm -rf "$copy" "$copy.orig"' EXIT
-  bash "$0" --fix "$copy" >/dev/null
-  bash "$0" --check "$copy"
-  [ -z "$(bash "$0" --fix "$copy")" ] || { echo "spdx: a second --fix changed files" >&2; exit 1; }
-  failures=0
-  while IFS= read -r file; do
-    # Only additions, and only the two lines and a blank one.
-    changes=$(diff "$copy.orig/$file" "$copy/$file" | grep -E '^[<>]' || true)
-    if grep -q '^<' <<<"$changes" ||
-       grep -vxE "> ((// |/\\* |# )($SPDX|$COPYRIGHT)( \\*/)?)?" <<<"$changes" | grep -q .; then
-      echo "spdx: $file: --fix changed more than its top lines" >&2; failures=$((failures + 1))
+  covered() {
+    local files
+    if git rev-parse --is-inside-work-tree >/dev/null 2>&1 && [ "$(git rev-parse --show-toplevel)" = "$(pwd -P)" ]; then
+      files=$(git ls-files --cached --others --exclude-standard)
+    else
+      files=$(find . -path ./.git -prune -o -path ./build -prune -o -path ./report -prune -o -type f -print |
+              sed 's|^\./||')
     fi
-    case $file in
-      *.sh | .ci/run) bash -n "$copy/$file" || failures=$((failures + 1)) ;;
+    grep -E '(\.(c|cpp|h|hpp|py|sh|cmake|in|supp)|(^|/)CMakeLists\.txt|(^|/)pyproject\.toml|^\.ci/run)$' <<<"$files" |
+      grep -vE '(^|/)fuzz/[^/]*(corpus|regressions)/|^shim/abi/' | sort || true
+  }
+
+  # The comment syntax of a file: "//", "/*" (C files written with block comments) or "#".
+  syntax() {
+    case $1 in
+      *.c | *.cpp | *.h | *.hpp | *.h.in)
+        if head -n1 "$1" | grep -q '^/\*'; then echo '/*'; else echo '//'; fi ;;
+      *) echo '#' ;;
+    esac
+  }
+
+  has_header() { head -n 5 "$1" | grep -qF "$SPDX" && head -n 5 "$1" | grep -qF "$COPYRIGHT"; }
+
+  add_header() {
+    local file=$1 open close
+    case $(syntax "$file") in
+      '//') open='// ' close='' ;;
+      '/*') open='/* ' close=' */' ;;
+      '#') open='# ' close='' ;;
+    esac
+    local tmp
+    tmp=$(mktemp)
+    awk -v a="$open$SPDX$close" -v b="$open$COPYRIGHT$close" -v prefix="${open% }" '
+      function header(next_line) {
+        print a; print b
+        if (next_line != "" && index(next_line, prefix) != 1) print ""
+      }
+      NR == 1 && /^#!/ { print; shebang = 1; next }
+      !done { header($0); done = 1 }
+      { print }
+      END { if (!done) { if (shebang || NR == 0) header("") } }
+    ' "$file" >"$tmp"
+    cat "$tmp" >"$file" # keeps the file's mode
+    rm -f "$tmp"
+  }
+
+  if [ "$mode" = --verify-fix ]; then
+    copy=$(mktemp -d)
+    trap 'rm -rf "$copy"' EXIT
+    covered | while IFS= read -r file; do mkdir -p "$copy/$(dirname "$file")"; cp -p "$file" "$copy/$file"; done
+    cp -r "$copy" "$copy.orig"
+    trap 'rm -rf "$copy" "$copy.orig"' EXIT
+    bash "$0" --fix "$copy" >/dev/null
+    bash "$0" --check "$copy"
+    [ -z "$(bash "$0" --fix "$copy")" ] || { echo "spdx: a second --fix changed files" >&2; exit 1; }
+    failures=0
+    while IFS= read -r file; do
+      # Only additions, and only the two lines and a blank one.
+      changes=$(diff "$copy.orig/$file" "$copy/$file" | grep -E '^[<>]' || true)
+      if grep -q '^<' <<<"$changes" ||
+         grep -vxE "> ((// |/\\* |# )($SPDX|$COPYRIGHT)( \\*/)?)?" <<<"$changes" | grep -q .; then
+        echo "spdx: $file: --fix changed more than its top lines" >&2; failures=$((failures + 1))
+      fi
+      case $file in
+        *.sh | .ci/run) bash -n "$copy/$file" || failures=$((failures + 1)) ;;
+      esac
+    done < <(covered)
+    covered | grep '\.py$' | sed "s|^|$copy/|" |
+      python3 -c 'import ast, sys; [ast.parse(open(f.strip()).read(), f.strip()) for f in sys.stdin]' ||
+      failures=$((failures + 1))
+    [ "$failures" -eq 0 ] || exit 1
+    echo "spdx: --fix verified on a copy of $(covered | wc -l) files"
+    exit 0
+  fi
+
+  missing=0
+  while IFS= read -r file; do
+    [ -n "$file" ] || continue
+    case $mode in
+      --list) echo "$file" ;;
+      --check) has_header "$file" || { echo "spdx: $file: no '$SPDX' and '$COPYRIGHT' lines at the top"; missing=$((missing + 1)); } ;;
+      --fix) has_header "$file" || { add_header "$file"; echo "spdx: added to $file"; } ;;
     esac
   done < <(covered)
-  covered | grep '\.py$' | sed "s|^|$copy/|" |
-    python3 -c 'import ast, sys; [ast.parse(open(f.strip()).read(), f.strip()) for f in sys.stdin]' ||
-    failures=$((failures + 1))
-  [ "$failures" -eq 0 ] || exit 1
-  echo "spdx: --fix verified on a copy of $(covered | wc -l) files"
-  exit 0
-fi
 
-missing=0
-while IFS= read -r file; do
-  [ -n "$file" ] || continue
-  case $mode in
-    --list) echo "$file" ;;
-    --check) has_header "$file" || { echo "spdx: $file: no '$SPDX' and '$COPYRIGHT' lines at the top"; missing=$((missing + 1)); } ;;
-    --fix) has_header "$file" || { add_header "$file"; echo "spdx: added to $file"; } ;;
-  esac
-done < <(covered)
-
-if [ "$mode" = --check ]; then
-  if [ "$missing" -gt 0 ]; then
-    echo "spdx: $missing file(s) without the licence header; bash ci/spdx.sh --fix adds it" >&2
-    exit 1
+  if [ "$mode" = --check ]; then
+    if [ "$missing" -gt 0 ]; then
+      echo "spdx: $missing file(s) without the licence header; bash ci/spdx.sh --fix adds it" >&2
+      exit 1
+    fi
+    echo "spdx: every covered file has the licence header"
   fi
-  echo "spdx: every covered file has the licence header"
-fi
+}
+
+main "$@"; exit
