@@ -46,7 +46,18 @@ main() {
     esac
   }
 
-  has_header() { head -n 5 "$1" | grep -qF "$SPDX" && head -n 5 "$1" | grep -qF "$COPYRIGHT"; }
+  # The covered files without both lines in their first five (one awk over all of them; an empty file has none).
+  without_header() {
+    local files
+    files=$(covered)
+    [ -n "$files" ] || return 0
+    while IFS= read -r file; do [ -s "$file" ] || echo "$file"; done <<<"$files"
+    tr '\n' '\0' <<<"$files" | xargs -0 awk -v s="$SPDX" -v c="$COPYRIGHT" '
+      function finish() { if (name != "" && !(a && b)) print name }
+      FNR == 1 { finish(); name = FILENAME; a = b = 0 }
+      FNR <= 5 { if (index($0, s)) a = 1; if (index($0, c)) b = 1 }
+      END { finish() }'
+  }
 
   add_header() {
     local file=$1 open close
@@ -73,25 +84,25 @@ main() {
 
   if [ "$mode" = --verify-fix ]; then
     copy=$(mktemp -d)
-    trap 'rm -rf "$copy"' EXIT
-    covered | while IFS= read -r file; do mkdir -p "$copy/$(dirname "$file")"; cp -p "$file" "$copy/$file"; done
-    cp -r "$copy" "$copy.orig"
     trap 'rm -rf "$copy" "$copy.orig"' EXIT
+    covered | tr '\n' '\0' | tar --null -cf - -T - | tar -xf - -C "$copy"
+    cp -a "$copy" "$copy.orig"
     bash "$0" --fix "$copy" >/dev/null
     bash "$0" --check "$copy"
     [ -z "$(bash "$0" --fix "$copy")" ] || { echo "spdx: a second --fix changed files" >&2; exit 1; }
     failures=0
+    # Only additions, and only the two lines and a blank one.
+    changes=$(diff -r "$copy.orig" "$copy" | grep -E '^[<>]' || true)
+    if grep -q '^<' <<<"$changes" ||
+       grep -vxE "> ((// |/\\* |# )($SPDX|$COPYRIGHT)( \\*/)?)?" <<<"$changes" | grep -q .; then
+      echo "spdx: --fix changed more than the files' top lines:" >&2
+      diff -r "$copy.orig" "$copy" | grep -E '^(diff|<|>)' | grep -vxE "> ((// |/\\* |# )($SPDX|$COPYRIGHT)( \\*/)?)?" |
+        head -n 20 >&2
+      failures=$((failures + 1))
+    fi
     while IFS= read -r file; do
-      # Only additions, and only the two lines and a blank one.
-      changes=$(diff "$copy.orig/$file" "$copy/$file" | grep -E '^[<>]' || true)
-      if grep -q '^<' <<<"$changes" ||
-         grep -vxE "> ((// |/\\* |# )($SPDX|$COPYRIGHT)( \\*/)?)?" <<<"$changes" | grep -q .; then
-        echo "spdx: $file: --fix changed more than its top lines" >&2; failures=$((failures + 1))
-      fi
-      case $file in
-        *.sh | .ci/run) bash -n "$copy/$file" || failures=$((failures + 1)) ;;
-      esac
-    done < <(covered)
+      bash -n "$copy/$file" || failures=$((failures + 1))
+    done < <(covered | grep -E '\.sh$|^\.ci/run$')
     covered | grep '\.py$' | sed "s|^|$copy/|" |
       python3 -c 'import ast, sys; [ast.parse(open(f.strip()).read(), f.strip()) for f in sys.stdin]' ||
       failures=$((failures + 1))
@@ -100,23 +111,21 @@ main() {
     exit 0
   fi
 
-  missing=0
-  while IFS= read -r file; do
-    [ -n "$file" ] || continue
-    case $mode in
-      --list) echo "$file" ;;
-      --check) has_header "$file" || { echo "spdx: $file: no '$SPDX' and '$COPYRIGHT' lines at the top"; missing=$((missing + 1)); } ;;
-      --fix) has_header "$file" || { add_header "$file"; echo "spdx: added to $file"; } ;;
-    esac
-  done < <(covered)
-
-  if [ "$mode" = --check ]; then
-    if [ "$missing" -gt 0 ]; then
-      echo "spdx: $missing file(s) without the licence header; bash ci/spdx.sh --fix adds it" >&2
-      exit 1
-    fi
-    echo "spdx: every covered file has the licence header"
-  fi
+  case $mode in
+    --list) covered ;;
+    --check)
+      missing=$(without_header | sort -u)
+      while IFS= read -r file; do
+        [ -n "$file" ] && echo "spdx: $file: no '$SPDX' and '$COPYRIGHT' lines at the top"
+      done <<<"$missing"
+      if [ -n "$missing" ]; then
+        echo "spdx: $(wc -l <<<"$missing") file(s) without the licence header; bash ci/spdx.sh --fix adds it" >&2
+        exit 1
+      fi
+      echo "spdx: every covered file has the licence header" ;;
+    --fix)
+      without_header | sort -u | while IFS= read -r file; do add_header "$file"; echo "spdx: added to $file"; done ;;
+  esac
 }
 
 main "$@"; exit
