@@ -13,12 +13,16 @@ for component in stipple python; do
     { cat "$work/install.log"; exit 1; }
 done
 site=$(find "$work/prefix" -type d -path '*/python3/site-packages' | head -n1)
-[ -n "$site" ] && [ -f "$site/stipple/_install_location.py" ] ||
-  { echo "check_installed: no stipple package with its install location under the prefix" >&2; cat "$work/install.log"; exit 1; }
+if [ -z "$site" ] || [ ! -f "$site/stipple/_install_location.py" ]; then
+  echo "check_installed: no stipple package with its install location under the prefix" >&2
+  cat "$work/install.log"
+  exit 1
+fi
 
 mkdir "$work/run"
 cd "$work/run"
-env -u STIPPLE_LIBRARY -u LD_LIBRARY_PATH PYTHONPATH="$site" PYTHONDONTWRITEBYTECODE=1 "$python" - "$work/prefix" "$library" <<'PY'
+env -u STIPPLE_LIBRARY -u LD_LIBRARY_PATH PYTHONPATH="$site" PYTHONDONTWRITEBYTECODE=1 \
+  "$python" - "$work/prefix" "$library" <<'PY'
 import pathlib, sys
 import numpy as np
 import stipple

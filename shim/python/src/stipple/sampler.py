@@ -63,7 +63,8 @@ class Sampler:
     index). Pixel coordinates are -2^31..2^32-1 (negative ones as the C ABI's two's complement). Every integer
     is checked against its C type and the library's limits before the call; every failure raises StippleError.
     Poisson patterns generate each set size once per process: the first call at k*N >= 2^18 takes seconds
-    (2.4 s of CPU at 2^18, about 12 s at 2^20), and creating such a sampler issues a CostWarning. Close with close() or a with-block (or let it go).
+    (2.4 s of CPU at 2^18, about 12 s at 2^20), and creating such a sampler issues a CostWarning. Close with
+    close() or a with-block (or let it go).
     """
 
     def __init__(self, library, pattern, samples_per_pixel, seed=0, *, blue_noise=False, layout=None):
