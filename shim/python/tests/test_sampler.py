@@ -5,6 +5,7 @@ the library's message, and an unbiased streamed estimate of an edged integral.
 Run: STIPPLE_LIBRARY=<libstipple.so.1> python3 -m unittest discover -s shim/python/tests
 """
 import math
+import os
 import unittest
 
 import numpy as np
@@ -16,6 +17,13 @@ class SamplerTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.lib = stipple.Library()
+
+    def test_package_version_is_the_projects(self):
+        project = os.environ.get("STIPPLE_PROJECT_VERSION")
+        if project is None:
+            self.skipTest("STIPPLE_PROJECT_VERSION not set (CTest sets it)")
+        self.assertEqual(stipple.__version__, project, "bump src/stipple/__init__.py with the project version")
+        self.assertEqual(".".join(map(str, self.lib.version)), project)
 
     def test_every_pattern_is_listed_and_serves_streams(self):
         self.assertEqual(self.lib.patterns[:6],
