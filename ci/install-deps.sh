@@ -19,6 +19,7 @@ packages=(
   slurm-wlm slurmctld slurmd slurm-client munge
   nlohmann-json3-dev
   python3-yaml
+  python3-numpy python3-venv python3-pip python3-setuptools   # the Python package, its tests and pip install
 )
 
 missing=()

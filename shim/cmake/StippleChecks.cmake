@@ -43,15 +43,7 @@ endif()
 # The example hosts: each prints its error table and asserts stratified < independent (see the sources).
 add_test(NAME shim.quarter_disk_c COMMAND quarter_disk)
 set_tests_properties(shim.quarter_disk_c PROPERTIES LABELS "statistical")
-# A sanitizer build's library cannot be dlopened by an uninstrumented python3.
-if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
-  find_program(STIPPLE_PYTHON3 python3)
-  if(STIPPLE_PYTHON3)
-    add_test(NAME shim.quarter_disk_py
-      COMMAND ${STIPPLE_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/examples/quarter_disk.py $<TARGET_FILE:stipple>)
-    set_tests_properties(shim.quarter_disk_py PROPERTIES LABELS "statistical")
-  endif()
-endif()
+# The Python host (examples/quarter_disk.py) is registered with the Python package (python/CMakeLists.txt).
 
 # 1.0 compatibility: abidiff against the 1.0 baseline (kept in abi/1.0/) reports additions only, and the C example
 # host built against the 1.0 header (abi/1.0/stipple/stipple.h, the released header unmodified) runs against this
@@ -74,21 +66,3 @@ set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")
 # stratified per call index with data-dependent skipped calls (see the source).
 add_test(NAME shim.tiny_path_tracer COMMAND tiny_path_tracer)
 set_tests_properties(shim.tiny_path_tracer PROPERTIES LABELS "statistical")
-
-# The importable NumPy binding (examples/python/stipple_numpy.py) and its test; needs Debian's python3-numpy
-# (hence /usr/bin first), and no sanitizer build (an uninstrumented python3 cannot load it).
-if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
-  find_program(STIPPLE_NUMPY_PYTHON3 NAMES python3 HINTS /usr/bin)
-  if(STIPPLE_NUMPY_PYTHON3)
-    execute_process(COMMAND ${STIPPLE_NUMPY_PYTHON3} -c "import numpy" RESULT_VARIABLE _stipple_no_numpy
-                    OUTPUT_QUIET ERROR_QUIET)
-    if(_stipple_no_numpy EQUAL 0)
-      add_test(NAME shim.stipple_numpy
-        COMMAND ${STIPPLE_NUMPY_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/examples/python/test_stipple_numpy.py
-                $<TARGET_FILE:stipple>)
-      set_tests_properties(shim.stipple_numpy PROPERTIES LABELS "unit;statistical")
-    else()
-      message(WARNING "python3 without numpy (python3-numpy): the shim.stipple_numpy test is not registered")
-    endif()
-  endif()
-endif()

@@ -23,6 +23,9 @@ private:
 
 // Stores the calling thread's message (truncated to a fixed buffer: recording an error never allocates).
 void setLastError(const char* function, const char* message) noexcept;
+// The same for a failure that is a bug in the library: the message also says so, gives the library's version
+// and says where to report it.
+void setInternalError(const char* function, const char* message) noexcept;
 const char* lastErrorMessage() noexcept;
 
 // Runs body(); maps Error / std::bad_alloc / anything else to a status and records the message.
@@ -38,10 +41,10 @@ stipple_status callGuarded(const char* function, Body&& body) noexcept {
         setLastError(function, "out of memory");
         return STIPPLE_ERROR_OUT_OF_MEMORY;
     } catch (const std::exception& e) {
-        setLastError(function, e.what());
+        setInternalError(function, e.what());
         return STIPPLE_ERROR_INTERNAL;
     } catch (...) {
-        setLastError(function, "unknown internal exception");
+        setInternalError(function, "unknown internal exception");
         return STIPPLE_ERROR_INTERNAL;
     }
 }

@@ -1,6 +1,6 @@
 // Bounds on what an input file or argument may ask for, checked before anything is allocated, so a hostile or
 // mistaken input ends in a clear error naming the limit and the offending value instead of std::bad_alloc, a
-// stack overflow or an Embree assertion. The README's hardening section lists the same numbers.
+// stack overflow or an Embree assertion. GUARANTEES.md lists the same numbers.
 // Header-only: the renderer and validation's renderer-free core both read files through readFileBounded.
 #pragma once
 
