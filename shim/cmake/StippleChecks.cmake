@@ -10,7 +10,15 @@ add_test(NAME shim.header_cxx
 add_test(NAME shim.header_hpp
   COMMAND ${CMAKE_CXX_COMPILER} -std=c++17 -pedantic -Wall -Wextra -Werror -fsyntax-only
           -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_hpp.cpp)
-set_tests_properties(shim.header_c99 shim.header_cxx shim.header_hpp PROPERTIES LABELS unit)
+# stipple.hpp as C++11 (the oldest standard it supports) and without exceptions, strict.
+add_test(NAME shim.header_hpp_cxx11
+  COMMAND ${CMAKE_CXX_COMPILER} -std=c++11 -pedantic -Wall -Wextra -Werror -fsyntax-only
+          -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_hpp.cpp)
+add_test(NAME shim.header_hpp_no_exceptions
+  COMMAND ${CMAKE_CXX_COMPILER} -std=c++11 -fno-exceptions -pedantic -Wall -Wextra -Werror -fsyntax-only
+          -I${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/tests/header_hpp.cpp)
+set_tests_properties(shim.header_c99 shim.header_cxx shim.header_hpp shim.header_hpp_cxx11
+                     shim.header_hpp_no_exceptions PROPERTIES LABELS unit)
 add_library(stipple_header_c99 OBJECT tests/header_c99.c)
 set_target_properties(stipple_header_c99 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
 target_compile_options(stipple_header_c99 PRIVATE -pedantic -Wall -Wextra -Werror)
@@ -74,6 +82,11 @@ set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")
 # stratified per call index with data-dependent skipped calls (see the source).
 add_test(NAME shim.tiny_path_tracer COMMAND tiny_path_tracer)
 set_tests_properties(shim.tiny_path_tracer PROPERTIES LABELS "statistical")
+
+# The C++11 host built with -fno-exceptions (examples/analytic_host.cpp): arrays unbiased against the closed form,
+# stratified across the N * k values, the cursor's batches equal the per-sample calls, errors through status forms.
+add_test(NAME shim.analytic_host COMMAND analytic_host --check)
+set_tests_properties(shim.analytic_host PROPERTIES LABELS "statistical")
 
 # The importable NumPy binding (examples/python/stipple_numpy.py) and its test; needs Debian's python3-numpy
 # (hence /usr/bin first), and no sanitizer build (an uninstrumented python3 cannot load it).
