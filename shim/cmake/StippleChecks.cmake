@@ -61,22 +61,25 @@ if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
   endif()
 endif()
 
-# 1.0 compatibility: abidiff against the 1.0 baseline (kept in abi/1.0/) reports additions only, and the C example
-# host built against the 1.0 header (abi/1.0/stipple/stipple.h, the released header unmodified) runs against this
-# library through dlopen.
-if(STIPPLE_ABIDIFF)
-  add_test(NAME shim.abi_since_1_0 COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-abi.sh $<TARGET_FILE:stipple>
-                                           shim/abi/1.0/libstipple.abi)
-  set_tests_properties(shim.abi_since_1_0 PROPERTIES LABELS unit)
-endif()
-add_executable(quarter_disk_abi_1_0 examples/quarter_disk.c)
-set_target_properties(quarter_disk_abi_1_0 PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
-target_compile_options(quarter_disk_abi_1_0 PRIVATE -pedantic -Wall -Wextra -Werror)
-target_include_directories(quarter_disk_abi_1_0 PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/abi/1.0)
-target_link_libraries(quarter_disk_abi_1_0 PRIVATE ${CMAKE_DL_LIBS} m)
-add_dependencies(quarter_disk_abi_1_0 stipple)
-add_test(NAME shim.host_abi_1_0 COMMAND quarter_disk_abi_1_0 $<TARGET_FILE:stipple>)
-set_tests_properties(shim.host_abi_1_0 PROPERTIES LABELS "statistical")
+# Compatibility with every released minor version: abidiff against its baseline (kept in abi/1.<m>/) reports
+# additions only, and the C example host built against its header (abi/1.<m>/stipple/stipple.h, the released header
+# unmodified) runs against this library through dlopen.
+foreach(_minor 0 1)
+  if(STIPPLE_ABIDIFF)
+    add_test(NAME shim.abi_since_1_${_minor}
+      COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/abi/check-abi.sh $<TARGET_FILE:stipple>
+              shim/abi/1.${_minor}/libstipple.abi)
+    set_tests_properties(shim.abi_since_1_${_minor} PROPERTIES LABELS unit)
+  endif()
+  add_executable(quarter_disk_abi_1_${_minor} examples/quarter_disk.c)
+  set_target_properties(quarter_disk_abi_1_${_minor} PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+  target_compile_options(quarter_disk_abi_1_${_minor} PRIVATE -pedantic -Wall -Wextra -Werror)
+  target_include_directories(quarter_disk_abi_1_${_minor} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/abi/1.${_minor})
+  target_link_libraries(quarter_disk_abi_1_${_minor} PRIVATE ${CMAKE_DL_LIBS} m)
+  add_dependencies(quarter_disk_abi_1_${_minor} stipple)
+  add_test(NAME shim.host_abi_1_${_minor} COMMAND quarter_disk_abi_1_${_minor} $<TARGET_FILE:stipple>)
+  set_tests_properties(shim.host_abi_1_${_minor} PROPERTIES LABELS "statistical")
+endforeach()
 
 # The stipple.hpp host: unbiased against the closed form with indices past N, progressive passes equal one pass,
 # stratified per call index with data-dependent skipped calls (see the source).
