@@ -414,7 +414,7 @@ public:
     explicit PixelSampleCursor(const Sampler& sampler)
         : sampler_(&sampler), pixel_(Pixel()), sampleIndex_(0), dimension_(0), array_(0),
           batchSamples_(sampler.samplesPerPixel() ? sampler.samplesPerPixel() : 1), generation_(1), started_(false),
-          lastFailed_(false) {}
+          failed_(3, 0.0f) {}
 
     // The largest number of samples one fetch covers (default N; it never crosses a block).
     void setBatchSamples(uint32_t samples) { batchSamples_ = samples < 1 ? 1 : samples; }
@@ -427,7 +427,7 @@ public:
         sampleIndex_ = sampleIndex;
         dimension_ = dimension;
         array_ = 0;
-        status_ = Status();
+        if (!status_.ok()) status_ = Status();
     }
     uint32_t dimension() const { return dimension_; }
     uint32_t sampleIndex() const { return sampleIndex_; }
@@ -443,46 +443,54 @@ public:
         return r;
     }
     // The film position within the pixel: its own 2D stream (kPixelStream); does not advance the counter.
-    std::array<float, 2> getPixel2D() { return pair(next(kPixelStream, 2, 0, false)); }
+    std::array<float, 2> getPixel2D() {
+        const Batch& b = film_;
+        if (b.generation == generation_ && sampleIndex_ - b.first < b.count)
+            return pair(b.values.data() + size_t(sampleIndex_ - b.first) * 2);
+        return pair(fetch(kPixelStream, 2, 0, false));
+    }
     // The next array: k values (k floats, or k (u, v) pairs as 2k floats), valid until this cursor's next call.
     const float* get1DArray(uint32_t k) { return value(next(array_++, 1, k, true)); }
     const float* get2DArray(uint32_t k) { return value(next(array_++, 2, k, true)); }
 
     // The status forms: the same values, the status returned (also recorded in status()). Never throw.
     Status next1D(float& out) STIPPLE_HPP_MUST_USE {
-        out = *next(dimension_++, 1, 0, false);
-        return lastCall();
+        const float* v = next(dimension_++, 1, 0, false);
+        out = v[0];
+        return outcome(v);
     }
     Status next2D(std::array<float, 2>& out) STIPPLE_HPP_MUST_USE {
         const float* v = next(dimension_++, 2, 0, false);
         out[0] = v[0];
         out[1] = v[1];
-        return lastCall();
+        return outcome(v);
     }
     Status next3D(std::array<float, 3>& out) STIPPLE_HPP_MUST_USE {
         const float* v = next(dimension_++, 3, 0, false);
         for (int c = 0; c < 3; ++c) out[c] = v[c];
-        return lastCall();
+        return outcome(v);
     }
     // The next array of arity 1..3: out points at k * arity floats, valid until this cursor's next call.
     Status nextArray(uint32_t arity, uint32_t k, const float*& out) STIPPLE_HPP_MUST_USE {
         out = next(array_++, arity, k, true);
-        return lastCall();
+        return outcome(out);
     }
 
 private:
-    // One cached batch: samples [first, first + count) of one (index, arity[, k]) of the current pixel.
+    // One cached batch: samples [first, first + count) of one (index, arity[, k]) of the current pixel, `floats`
+    // floats per sample from values.data().
     struct Batch {
         uint64_t generation;
-        uint32_t arity, k, first, count;
+        uint32_t shape; // arity | k << 2
+        uint32_t first, count, floats;
         std::vector<float> values;
-        Batch() : generation(0), arity(0), k(0), first(0), count(0) {}
+        Batch() : generation(0), shape(0), first(0), count(0), floats(0) {}
     };
 
-    // The hot path returns a pointer only; a failure sets lastFailed_ and status_ and returns zeros.
+    // A failed call returns failed_.data() (zeros); nothing else does, so the pointer itself says whether it failed.
     const float* value(const float* v) {
 #if STIPPLE_HPP_EXCEPTIONS
-        if (lastFailed_) check(lastError_);
+        if (v == failed_.data()) check(lastError_);
 #endif
         return v;
     }
@@ -491,17 +499,25 @@ private:
         std::array<float, 2> r = {{v[0], v[1]}};
         return r;
     }
-    Status lastCall() const { return lastFailed_ ? lastError_ : Status(); }
+    Status outcome(const float* v) const { return v == failed_.data() ? lastError_ : Status(); }
 
-    // Values of (index, arity[, k]) at the current sample: from the cache, or fetched for the rest of the block.
+    // The hot path: a hit in the current pixel's batch of (index, arity[, k]); everything else goes to fetch().
     const float* next(uint32_t index, uint32_t arity, uint32_t k, bool isArray) {
-        lastFailed_ = false;
-        const size_t floats = size_t(isArray ? k : 1) * arity;
+        std::vector<Batch>& batches = isArray ? arrays_ : streams_[(arity - 1) % 3];
+        const uint32_t shape = arity | k << 2;
+        if (index < batches.size()) {
+            const Batch& b = batches[index];
+            if (b.generation == generation_ && b.shape == shape && sampleIndex_ - b.first < b.count)
+                return b.values.data() + size_t(sampleIndex_ - b.first) * b.floats;
+        }
+        return fetch(index, arity, k, isArray);
+    }
+
+    // A miss: fetch the rest of the sample's block (at most batchSamples_ samples) with one batch call.
+    const float* fetch(uint32_t index, uint32_t arity, uint32_t k, bool isArray) {
+        const uint32_t floats = (isArray ? k : 1) * arity;
         Batch* batch = slot(index, arity, isArray);
         if (!batch) return direct(index, arity, k, isArray, floats);
-        if (batch->generation == generation_ && batch->arity == arity && batch->k == k &&
-            sampleIndex_ - batch->first < batch->count)
-            return &batch->values[size_t(sampleIndex_ - batch->first) * floats];
         const uint64_t n = sampler_->samplesPerPixel() ? sampler_->samplesPerPixel() : 1;
         const uint64_t blockEnd = (uint64_t(sampleIndex_) / n + 1) * n;
         uint64_t count = blockEnd - sampleIndex_;
@@ -514,13 +530,13 @@ private:
                                                         batch->values.data());
         if (!s.ok()) return failed(s, floats);
         batch->generation = generation_;
-        batch->arity = arity;
-        batch->k = k;
+        batch->shape = arity | k << 2;
         batch->first = sampleIndex_;
         batch->count = uint32_t(count);
+        batch->floats = floats;
         return batch->values.data();
     }
-    // Indices past the cache: one call per value.
+    // Indices past the cache (and the film stream): one call per value.
     const float* direct(uint32_t index, uint32_t arity, uint32_t k, bool isArray, size_t floats) {
         spill_.resize(floats);
         const Status s = isArray ? sampler_->array(pixel_, sampleIndex_, index, arity, k, spill_.data())
@@ -530,34 +546,30 @@ private:
     }
     const float* failed(const Status& s, size_t floats) {
         if (status_.ok()) status_ = s;
-        lastFailed_ = true;
         lastError_ = s;
-        zeros_.assign(floats < 3 ? 3 : floats, 0.0f);
-        return zeros_.data();
+        failed_.assign(floats < 3 ? 3 : floats, 0.0f);
+        return failed_.data();
     }
+    // The batch of (index, arity[, k]); nullptr past the cache.
     Batch* slot(uint32_t index, uint32_t arity, bool isArray) {
-        if (isArray) {
-            if (index >= kMaxCachedIndex) return nullptr;
-            if (index >= arrays_.size()) arrays_.resize(index + 1);
-            return &arrays_[index];
-        }
-        if (index == kPixelStream) return &pixelStream_;
-        if (index >= kMaxCachedIndex || arity < 1 || arity > 3) return nullptr;
-        std::vector<Batch>& streams = streams_[arity - 1];
-        if (index >= streams.size()) streams.resize(index + 1);
-        return &streams[index];
+        if (arity < 1 || arity > 3) return nullptr;
+        std::vector<Batch>& batches = isArray ? arrays_ : streams_[arity - 1];
+        if (index == kPixelStream && !isArray) return &film_;
+        if (index >= kMaxCachedIndex) return nullptr;
+        if (index >= batches.size()) batches.resize(index + 1);
+        return &batches[index];
     }
 
     const Sampler* sampler_;
     Pixel pixel_;
     uint32_t sampleIndex_, dimension_, array_, batchSamples_;
     uint64_t generation_;
-    bool started_, lastFailed_;
+    bool started_;
     Status status_, lastError_;
     std::vector<Batch> streams_[3]; // per arity, indexed by stream index
     std::vector<Batch> arrays_;     // indexed by array index (arity and k checked per use)
-    Batch pixelStream_;
-    std::vector<float> spill_, zeros_;
+    Batch film_;                    // getPixel2D's stream
+    std::vector<float> spill_, failed_;
 };
 
 } // namespace stipple
