@@ -8,6 +8,7 @@ namespace stipple::validation {
 const char* const kValidateUsage =
     "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
     "                        [--shard i/n] [--references-only] [--merge DIR1 DIR2 ...]\n"
+    "                        [--allow-renderer | --renderer PROGRAM]\n"
     "       stipple-validate --version | --help\n"
     "  -o DIR             report folder (default: report)\n"
     "  --threads T        render threads (default: the matrix's, else all hardware threads)\n"
@@ -18,6 +19,8 @@ const char* const kValidateUsage =
     "                     left to --merge\n"
     "  --references-only  make the references (of this shard's scenes) in the cache and stop\n"
     "  --merge DIR...     combine shard report folders into the report a single run makes\n"
+    "  --allow-renderer   run the external renderer commands the matrix names (a matrix alone runs no program)\n"
+    "  --renderer PROGRAM run PROGRAM as the external renderer, in place of the program of the matrix's commands\n"
     "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
 
 Args parseArgs(const std::vector<std::string>& argv) {
@@ -58,7 +61,12 @@ Args parseArgs(const std::vector<std::string>& argv) {
             a.shardCount = n2;
         } else if (s == "--references-only")
             a.referencesOnly = true;
-        else if (s == "--merge") {
+        else if (s == "--allow-renderer")
+            a.allowRenderer = true;
+        else if (s == "--renderer") {
+            a.renderer = value(i);
+            if (a.renderer.empty()) throw UsageError("--renderer: expected a program, got ''");
+        } else if (s == "--merge") {
             while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) a.merge.push_back(argv[++i]);
             if (a.merge.empty()) throw UsageError("--merge needs at least one report folder");
         } else if (!s.empty() && s[0] == '-')
