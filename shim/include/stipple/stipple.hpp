@@ -508,7 +508,7 @@ private:
         if (index < batches.size()) {
             const Batch& b = batches[index];
             if (b.generation == generation_ && b.shape == shape && sampleIndex_ - b.first < b.count)
-                return b.values.data() + size_t(sampleIndex_ - b.first) * b.floats;
+                return b.values.data() + size_t(sampleIndex_ - b.first) * ((isArray ? k : 1) * arity); // = b.floats
         }
         return fetch(index, arity, k, isArray);
     }
