@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifndef STIPPLE_HPP_EXCEPTIONS
@@ -64,6 +65,10 @@ public:
     bool ok() const { return code_ == STIPPLE_OK; }
     stipple_status code() const { return code_; }
     const std::string& message() const { return message_; }
+    void swap(Status& other) noexcept {
+        std::swap(code_, other.code_);
+        message_.swap(other.message_);
+    }
 
 private:
     stipple_status code_;
@@ -243,8 +248,8 @@ public:
     }
 
     ~Sampler() { reset(); }
-    Sampler(Sampler&& other) : Sampler() { swap(other); }
-    Sampler& operator=(Sampler&& other) {
+    Sampler(Sampler&& other) noexcept : Sampler() { swap(other); }
+    Sampler& operator=(Sampler&& other) noexcept {
         if (this != &other) {
             reset();
             swap(other);
@@ -365,22 +370,12 @@ private:
         sampler_ = nullptr;
         status_ = Status();
     }
-    void swap(Sampler& other) {
-        const stipple_api* api = api_;
-        api_ = other.api_;
-        other.api_ = api;
-        stipple_sampler handle = sampler_;
-        sampler_ = other.sampler_;
-        other.sampler_ = handle;
-        uint32_t n = samplesPerPixel_;
-        samplesPerPixel_ = other.samplesPerPixel_;
-        other.samplesPerPixel_ = n;
-        n = dimensionCount_;
-        dimensionCount_ = other.dimensionCount_;
-        other.dimensionCount_ = n;
-        Status s = status_;
-        status_ = other.status_;
-        other.status_ = s;
+    void swap(Sampler& other) noexcept {
+        std::swap(api_, other.api_);
+        std::swap(sampler_, other.sampler_);
+        std::swap(samplesPerPixel_, other.samplesPerPixel_);
+        std::swap(dimensionCount_, other.dimensionCount_);
+        status_.swap(other.status_);
     }
 
     const stipple_api* api_;
