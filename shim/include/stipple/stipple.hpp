@@ -514,7 +514,7 @@ private:
         Batch* batch = slot(index, arity, isArray);
         if (!batch) return direct(index, arity, k, isArray, floats);
         const uint64_t n = sampler_->samplesPerPixel() ? sampler_->samplesPerPixel() : 1;
-        const uint64_t blockEnd = (uint64_t(sampleIndex_) / n + 1) * n;
+        const uint64_t blockEnd = sampleIndex_ < n ? n : (uint64_t(sampleIndex_) / n + 1) * n; // no division in block 0
         uint64_t count = blockEnd - sampleIndex_;
         if (count > batchSamples_) count = batchSamples_;
         batch->generation = 0;
