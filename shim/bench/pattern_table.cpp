@@ -15,7 +15,7 @@
 #include "poisson_cache.h"
 #include "hash.h"
 
-#include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -79,31 +79,24 @@ void check(stipple_status s, const char* what) {
     }
 }
 
-struct Sampler {
-    stipple_sampler s = nullptr;
-    uint32_t floats = 0;
-    Sampler(const char* pattern, uint32_t n, int dim, uint64_t seed, uint32_t flags = 0) {
-        uint32_t id;
-        check(stipple_pattern_from_name(pattern, &id), pattern);
-        stipple_dimension_desc d{};
-        d.struct_size = sizeof d;
-        d.arity = uint32_t(dim);
-        d.count = 1;
-        stipple_sampler_desc desc{};
-        desc.struct_size = sizeof desc;
-        desc.pattern = id;
-        desc.samples_per_pixel = n;
-        desc.dimension_count = 1;
-        desc.seed = seed;
-        desc.dimensions = &d;
-        desc.flags = flags;
-        check(stipple_sampler_create(&desc, &s), "stipple_sampler_create");
-        floats = n * uint32_t(dim);
+void check(const stipple::Status& s, const char* what) {
+    if (!s.ok()) {
+        std::cerr << what << ": " << s.message() << "\n";
+        std::exit(1);
     }
-    ~Sampler() { stipple_sampler_release(s); }
+}
+
+// A one-dimension layout (arity dim, one value per sample) through stipple.hpp; failures end the tool.
+struct LayoutSampler {
+    stipple::Sampler sampler;
+    uint32_t floats = 0;
+    LayoutSampler(const char* pattern, uint32_t n, int dim, uint64_t seed, uint32_t flags = 0)
+        : floats(n * uint32_t(dim)) {
+        check(stipple::Sampler::create(sampler, pattern, n, seed, {{uint32_t(dim), 1, ""}}, flags), pattern);
+    }
     void fill(uint32_t x, uint32_t y, std::vector<float>& out) const {
         out.resize(floats);
-        check(stipple_sampler_fill_pixel(s, x, y, 0, out.data(), out.size()), "fill_pixel");
+        check(sampler.fillPixel(stipple::Pixel{int32_t(x), int32_t(y)}, 0, out.data(), out.size()), "fill_pixel");
     }
 };
 
@@ -293,7 +286,7 @@ int main(int argc, char** argv) {
             for (size_t ni = 0; ni < slopeNs.size(); ++ni) {
                 const uint32_t n = slopeNs[ni];
                 const int r = std::string(pattern) == "poisson-seed" && n >= 1024 ? std::max(sets / 5, 50) : sets;
-                Sampler s(pattern, n, 2, 0x7ab1e000 + n);
+                LayoutSampler s(pattern, n, 2, 0x7ab1e000 + n);
                 for (int set = 0; set < r; ++set) {
                     s.fill(uint32_t(set), 0, points);
                     for (size_t gi = 0; gi < g2.size(); ++gi) {
@@ -319,7 +312,7 @@ int main(int argc, char** argv) {
                 table << " | " << fmt(e.slope) << " [" << fmt(e.low) << ", " << fmt(e.high) << "]";
             }
             // Cost: thread CPU time of fill_pixel per float, 2D N = 4096, warm (poisson's cache family generated).
-            Sampler s(pattern, 4096, 2, 0xc057);
+            LayoutSampler s(pattern, 4096, 2, 0xc057);
             const int calls = std::string(pattern) == "poisson-seed" ? 20 : 400;
             for (int i = 0; i < 40; ++i) s.fill(uint32_t(i), 1, points);
             const double t0 = threadSeconds();
@@ -371,7 +364,7 @@ int main(int argc, char** argv) {
                     std::vector<std::vector<double>> imageMse(gs.size()), pixelSq(gs.size());
                     std::vector<double> power(kSize * kSize, 0.0);
                     for (int image = 0; image < images; ++image) {
-                        Sampler s(pattern, n, 2, 0xb1e0 + n + 1000 * uint64_t(image), flag);
+                        LayoutSampler s(pattern, n, 2, 0xb1e0 + n + 1000 * uint64_t(image), flag);
                         std::vector<double> error(kSize * kSize), sum(gs.size(), 0.0);
                         std::vector<float> points;
                         for (size_t y = 0; y < kSize; ++y)
@@ -467,7 +460,7 @@ int main(int argc, char** argv) {
             for (uint32_t n : ns) {
                 std::vector<std::vector<double>> sqP(gs.size()), sqS(gs.size());
                 std::vector<float> points;
-                Sampler p("poisson", n, dim, 0x9e55 + n), s("stratified", n, dim, 0x57a7 + n);
+                LayoutSampler p("poisson", n, dim, 0x9e55 + n), s("stratified", n, dim, 0x57a7 + n);
                 for (int set = 0; set < sets; ++set) {
                     p.fill(uint32_t(set), 7, points);
                     for (size_t gi = 0; gi < gs.size(); ++gi) {

@@ -16,7 +16,7 @@
 // set of N points, new pixel every call); poisson-seed and poisson as fresh generation (pointsets::generate*);
 // poisson-served through the C API from the warmed cache (what hosts pay per pixel; warm-up timed apart).
 // Times are thread CPU time (the machine is shared; wall time is in the CSV too).
-#include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 #include <stipple/version.h>
 
 #include "pointsets/pointsets.h"
@@ -61,9 +61,11 @@ struct Options {
     bool quick = false;
 };
 
-struct Sampler {
-    stipple_sampler handle = nullptr;
-    Sampler(uint32_t pattern, uint32_t arity, uint32_t n, uint64_t seed) {
+// A one-dimension layout (one value of `arity` per sample) through stipple.hpp; empty when the library refuses it
+// (its message in sampler.status()).
+struct LayoutSampler {
+    stipple::Sampler sampler;
+    LayoutSampler(uint32_t pattern, uint32_t arity, uint32_t n, uint64_t seed) {
         stipple_dimension_desc dim{};
         dim.struct_size = sizeof dim;
         dim.arity = arity;
@@ -75,11 +77,9 @@ struct Sampler {
         desc.dimension_count = 1;
         desc.seed = seed;
         desc.dimensions = &dim;
-        if (stipple_sampler_create(&desc, &handle) != STIPPLE_OK) handle = nullptr;
+        (void)stipple::Sampler::create(sampler, desc); // a failure is reported through sampler.status()
     }
-    ~Sampler() { stipple_sampler_release(handle); }
-    Sampler(const Sampler&) = delete;
-    Sampler& operator=(const Sampler&) = delete;
+    stipple_sampler handle() const { return sampler.handle(); }
 };
 
 struct Timing {
@@ -207,10 +207,10 @@ int main(int argc, char** argv) {
                     uint32_t code = p == "independent"  ? STIPPLE_PATTERN_INDEPENDENT
                                     : p == "stratified" ? STIPPLE_PATTERN_STRATIFIED
                                                         : STIPPLE_PATTERN_POISSON;
-                    Sampler s(code, uint32_t(dim), n, 7);
-                    if (!s.handle) {
+                    LayoutSampler s(code, uint32_t(dim), n, 7);
+                    if (!s.sampler) {
                         std::cerr << "error: sampler " << p << " dim " << dim << " n " << n << ": "
-                                  << stipple_last_error_message() << "\n";
+                                  << s.sampler.status().message() << "\n";
                         return 1;
                     }
                     if (code == STIPPLE_PATTERN_POISSON) { // warm the whole family first, timed apart
@@ -221,7 +221,7 @@ int main(int argc, char** argv) {
                     }
                     t = timeIt(
                         [&](uint64_t r) {
-                            stipple_sampler_fill_pixel(s.handle, uint32_t(r % 4096), uint32_t(r / 4096), 0,
+                            stipple_sampler_fill_pixel(s.handle(), uint32_t(r % 4096), uint32_t(r / 4096), 0,
                                                        buffer.data(), buffer.size());
                         },
                         opt.minTime);
@@ -312,7 +312,7 @@ int main(int argc, char** argv) {
     for (const char* pattern : {"independent", "stratified", "poisson-seed", "poisson"}) {
         std::string p = pattern;
         PowerSpectrum2D spectrum(K);
-        Sampler independent(STIPPLE_PATTERN_INDEPENDENT, 2, sn, 11), stratified(STIPPLE_PATTERN_STRATIFIED, 2, sn, 11);
+        LayoutSampler independent(STIPPLE_PATTERN_INDEPENDENT, 2, sn, 11), stratified(STIPPLE_PATTERN_STRATIFIED, 2, sn, 11);
         std::vector<float> buffer(2 * sn);
         for (int s = 0; s < opt.spectrumSets; ++s) {
             if (p == "poisson")
@@ -320,7 +320,7 @@ int main(int argc, char** argv) {
             else if (p == "poisson-seed")
                 buffer = generatePoissonSeed(2, sn, 0x5bec + s);
             else
-                stipple_sampler_fill_pixel(p == "independent" ? independent.handle : stratified.handle, uint32_t(s), 0,
+                stipple_sampler_fill_pixel(p == "independent" ? independent.handle() : stratified.handle(), uint32_t(s), 0,
                                            0, buffer.data(), buffer.size());
             spectrum.add(buffer.data(), sn);
         }

@@ -10,8 +10,8 @@
 // set of the family) is measured apart by BM_PoissonWarmup/<arity>/<N> on a fresh family.
 // Links the internal objects only to reach the cache for warming and to pick the batch kernels' ISA
 // (--isa=baseline|avx2|avx512: at most what the CPU runs; default the widest, as the library picks; recorded in the
-// JSON context as batch_isa); sampling goes through the C API.
-#include <stipple/stipple.h>
+// JSON context as batch_isa); samplers are made through stipple.hpp, the timed calls are the C API's.
+#include <stipple/stipple.hpp>
 
 #include "batch_isa.h"
 #include "pmj02_family.h"
@@ -45,18 +45,20 @@ void label(benchmark::State& state, uint32_t pattern) {
     state.SetLabel(name);
 }
 
-stipple_sampler makeStreamSampler(uint32_t pattern, uint32_t n) {
+// Samplers through stipple.hpp (the timed loops below call the C ABI directly: that is what they measure).
+stipple::Sampler makeStreamSampler(uint32_t pattern, uint32_t n) {
     stipple_sampler_desc desc{};
     desc.struct_size = sizeof desc;
     desc.pattern = pattern;
     desc.samples_per_pixel = n;
     desc.dimension_count = 0;
     desc.seed = 7;
-    stipple_sampler s = nullptr;
-    return stipple_sampler_create(&desc, &s) == STIPPLE_OK ? s : nullptr;
+    stipple::Sampler sampler;
+    (void)stipple::Sampler::create(sampler, desc); // a failure is in sampler.status()
+    return sampler;
 }
 
-stipple_sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
+stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
     stipple_dimension_desc dim{};
     dim.struct_size = sizeof dim;
     dim.arity = arity;
@@ -68,19 +70,18 @@ stipple_sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
     desc.dimension_count = 1;
     desc.seed = 7;
     desc.dimensions = &dim;
-    stipple_sampler s = nullptr;
-    return stipple_sampler_create(&desc, &s) == STIPPLE_OK ? s : nullptr;
+    stipple::Sampler sampler;
+    (void)stipple::Sampler::create(sampler, desc);
+    return sampler;
 }
 
 void BM_FillPixel(benchmark::State& state) {
     const auto pattern = static_cast<uint32_t>(state.range(0));
     const auto arity = static_cast<uint32_t>(state.range(1));
     const auto n = static_cast<uint32_t>(state.range(2));
-    stipple_sampler s = makeSampler(pattern, arity, n);
-    if (!s) {
-        state.SkipWithError(stipple_last_error_message());
-        return;
-    }
+    const stipple::Sampler sampler = makeSampler(pattern, arity, n);
+    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
+    stipple_sampler s = sampler.handle();
     warmPoisson(pattern, arity, n);
     std::vector<float> out(size_t(n) * arity);
     uint32_t pixel = 0;
@@ -97,15 +98,15 @@ void BM_FillPixel(benchmark::State& state) {
     const char* name = "?";
     stipple_pattern_name(pattern, &name);
     state.SetLabel(name);
-    stipple_sampler_release(s);
 }
 
 void BM_Sample(benchmark::State& state) {
     const auto pattern = static_cast<uint32_t>(state.range(0));
     const auto arity = static_cast<uint32_t>(state.range(1));
     const auto n = static_cast<uint32_t>(state.range(2));
-    stipple_sampler s = makeSampler(pattern, arity, n);
-    if (!s) return state.SkipWithError(stipple_last_error_message());
+    const stipple::Sampler sampler = makeSampler(pattern, arity, n);
+    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
+    stipple_sampler s = sampler.handle();
     warmPoisson(pattern, arity, n);
     float out[3];
     uint32_t pixel = 0;
@@ -118,15 +119,15 @@ void BM_Sample(benchmark::State& state) {
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * n);
     label(state, pattern);
-    stipple_sampler_release(s);
 }
 
 void BM_Stream(benchmark::State& state) {
     const auto pattern = static_cast<uint32_t>(state.range(0));
     const auto arity = static_cast<uint32_t>(state.range(1));
     const auto n = static_cast<uint32_t>(state.range(2));
-    stipple_sampler s = makeStreamSampler(pattern, n);
-    if (!s) return state.SkipWithError(stipple_last_error_message());
+    const stipple::Sampler sampler = makeStreamSampler(pattern, n);
+    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
+    stipple_sampler s = sampler.handle();
     warmPoisson(pattern, arity, n);
     float out[3];
     uint32_t pixel = 0;
@@ -140,15 +141,15 @@ void BM_Stream(benchmark::State& state) {
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * n * 8);
     label(state, pattern);
-    stipple_sampler_release(s);
 }
 
 void BM_StreamFill(benchmark::State& state) {
     const auto pattern = static_cast<uint32_t>(state.range(0));
     const auto arity = static_cast<uint32_t>(state.range(1));
     const auto n = static_cast<uint32_t>(state.range(2));
-    stipple_sampler s = makeStreamSampler(pattern, n);
-    if (!s) return state.SkipWithError(stipple_last_error_message());
+    const stipple::Sampler sampler = makeStreamSampler(pattern, n);
+    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
+    stipple_sampler s = sampler.handle();
     warmPoisson(pattern, arity, n);
     std::vector<float> out(size_t(n) * arity);
     uint32_t pixel = 0;
@@ -160,7 +161,6 @@ void BM_StreamFill(benchmark::State& state) {
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * n);
     label(state, pattern);
-    stipple_sampler_release(s);
 }
 
 void BM_PoissonWarmup(benchmark::State& state) {

@@ -226,6 +226,135 @@ STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, 
     });
 }
 
+// ---- 1.2: array streams, pattern listing and limits, flags by name ----------------------------------------------
+
+} // extern "C"
+
+namespace {
+
+stipple_pattern_limits patternLimits(uint32_t pattern) {
+    stipple_pattern_limits limits{};
+    limits.struct_size = sizeof limits;
+    const bool pmj02 = pattern == STIPPLE_PATTERN_PMJ02; // generation grows faster than linearly past 2^16
+    const uint32_t pmj02Max = 1u << stipple::Pmj02Family::kMaxLog2Length;
+    limits.max_samples_per_pixel = pmj02 ? pmj02Max : STIPPLE_MAX_SAMPLES_PER_PIXEL;
+    limits.max_set_size = pmj02 ? pmj02Max : STIPPLE_MAX_SET_SIZE;
+    limits.max_values_per_sample = STIPPLE_MAX_VALUES_PER_SAMPLE;
+    limits.max_dimensions = STIPPLE_MAX_DIMENSIONS;
+    limits.flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+    return limits;
+}
+
+void checkPattern(uint32_t pattern) {
+    if (pattern >= STIPPLE_PATTERN_COUNT)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is " + std::to_string(pattern) + "; expected 0.." +
+                                                        std::to_string(STIPPLE_PATTERN_COUNT - 1));
+}
+
+// k of an array: 1..max, and k * N within the sampler's pattern's set size.
+void checkArrayCount(const stipple::Sampler& s, uint32_t k) {
+    const stipple_pattern_limits limits = patternLimits(s.pattern());
+    if (k < 1 || k > limits.max_values_per_sample)
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    "k is " + std::to_string(k) + "; expected 1.." + std::to_string(limits.max_values_per_sample));
+    if (uint64_t(k) * s.samplesPerPixel() > limits.max_set_size) {
+        const char* name = "";
+        stipple_pattern_name(s.pattern(), &name);
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                    "k is " + std::to_string(k) + ": k * samples_per_pixel = " +
+                        std::to_string(uint64_t(k) * s.samplesPerPixel()) + "; the " + name +
+                        " pattern serves sets of at most " + std::to_string(limits.max_set_size) +
+                        " points (stipple_pattern_get_limits)");
+    }
+}
+
+} // namespace
+
+extern "C" {
+
+STIPPLE_API stipple_status stipple_sampler_array(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                 uint32_t sample_index, uint32_t array_index, uint32_t arity,
+                                                 uint32_t k, float* out, size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkArity(arity);
+        checkArrayCount(s, k);
+        requireNonNull(out, "out");
+        checkCapacity(out_count, size_t(k) * arity);
+        s.array(pixel_x, pixel_y, sample_index, array_index, arity, k, out);
+    });
+}
+
+STIPPLE_API stipple_status stipple_sampler_array_fill(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                      uint32_t first_sample, uint32_t sample_count,
+                                                      uint32_t array_index, uint32_t arity, uint32_t k, float* out,
+                                                      size_t out_count) {
+    return callGuarded(__func__, [&] {
+        const stipple::Sampler& s = checkedSampler(sampler);
+        checkArity(arity);
+        checkArrayCount(s, k);
+        if (sample_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
+        if (uint64_t(first_sample) + sample_count > (uint64_t(1) << 32))
+            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is " +
+                                                        std::to_string(uint64_t(first_sample) + sample_count) +
+                                                        "; expected at most 2^32 (sample indices are uint32)");
+        requireNonNull(out, "out");
+        checkCapacity(out_count, uint64_t(sample_count) * k * arity);
+        s.arrayFill(pixel_x, pixel_y, first_sample, sample_count, array_index, arity, k, out);
+    });
+}
+
+STIPPLE_API stipple_status stipple_pattern_count(uint32_t* out_count) {
+    return callGuarded(__func__, [&] {
+        requireNonNull(out_count, "out_count");
+        *out_count = STIPPLE_PATTERN_COUNT;
+    });
+}
+
+STIPPLE_API stipple_status stipple_pattern_get_limits(uint32_t pattern, stipple_pattern_limits* out_limits) {
+    return callGuarded(__func__, [&] {
+        checkPattern(pattern);
+        prepareOutput(out_limits, "out_limits");
+        const uint32_t size = out_limits->struct_size;
+        *out_limits = patternLimits(pattern);
+        out_limits->struct_size = size;
+    });
+}
+
+STIPPLE_API stipple_status stipple_pattern_parse(const char* name, uint32_t* out_pattern, uint32_t* out_flags) {
+    return callGuarded(__func__, [&] {
+        requireNonNull(name, "name");
+        requireNonNull(out_pattern, "out_pattern");
+        requireNonNull(out_flags, "out_flags");
+        static const char kBlueNoise[] = "+blue-noise";
+        const size_t length = strnlen(name, 128);
+        std::string base(name, length);
+        uint32_t flags = 0;
+        const size_t plus = base.find('+');
+        if (plus != std::string::npos) {
+            if (base.compare(plus, std::string::npos, kBlueNoise) != 0)
+                throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "name is \"" + base + "\"; the only suffix is \"" +
+                                                                kBlueNoise + "\" (STIPPLE_SAMPLER_FLAG_BLUE_NOISE)");
+            flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+            base.resize(plus);
+        }
+        std::string names;
+        for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p) {
+            const char* known = "";
+            stipple_pattern_name(p, &known);
+            if (base == known) {
+                *out_pattern = p;
+                *out_flags = flags;
+                return;
+            }
+            names += (p == 0 ? "\"" : p + 1 == STIPPLE_PATTERN_COUNT ? " or \"" : ", \"") + std::string(known) + "\"";
+        }
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "name is \"" + std::string(name, length) + (length == 128 ? "...\"" : "\"") +
+                                                        "; expected " + names + ", optionally followed by \"" +
+                                                        kBlueNoise + "\"");
+    });
+}
+
 STIPPLE_API stipple_status stipple_get_api(uint32_t abi_major, const stipple_api** out_api) {
     static const stipple_api kApi = {
         sizeof(stipple_api),
@@ -246,6 +375,11 @@ STIPPLE_API stipple_status stipple_get_api(uint32_t abi_major, const stipple_api
         &stipple_sampler_sample_independent,
         &stipple_sampler_stream,
         &stipple_sampler_stream_fill,
+        &stipple_sampler_array,
+        &stipple_sampler_array_fill,
+        &stipple_pattern_count,
+        &stipple_pattern_get_limits,
+        &stipple_pattern_parse,
     };
     return callGuarded(__func__, [&] {
         requireNonNull(out_api, "out_api");

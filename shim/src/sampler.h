@@ -7,6 +7,7 @@
 // Sample index i lies in block b = i / N at position i mod N; each block is a full, independently randomised set.
 #pragma once
 
+#include "array_sets.h"
 #include "dimension.h"
 #include "blue_noise.h"
 #include "patterns.h"
@@ -43,6 +44,13 @@ public:
     void sampleIndependent(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t stream, float* out,
                            size_t count) const;
 
+    // Array streams (sampler_arrays.cpp): k values per sample of array (index, arity), one set of k * N points per
+    // block as a declared dimension of count k. Arguments (k within the pattern's limits) checked by the ABI layer.
+    void array(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t index, uint32_t arity, uint32_t k,
+               float* out) const;
+    void arrayFill(uint32_t pixelX, uint32_t pixelY, uint32_t firstSample, uint32_t count, uint32_t index,
+                   uint32_t arity, uint32_t k, float* out) const;
+
 private:
     // One set of the sampler: the declared dimension d (streamArity 0) or stream (d, streamArity), in one block.
     struct SetRef {
@@ -68,6 +76,9 @@ private:
     // Streams of arity 1, 2, 3: sets of N points. A poisson stream acquires its family on first use.
     std::array<Dimension, 3> streams_;
     mutable std::array<std::once_flag, 3> streamFamilyOnce_;
+    // Array streams: the set state of each (arity, k) asked, made on first use (arraySet).
+    const Dimension& arraySet(uint32_t arity, uint32_t k) const;
+    mutable ArraySets arraySets_;
 };
 
 // Builds the per-pattern state of a set of `points` points of one arity (strata grid, Poisson family).

@@ -320,7 +320,7 @@ BOOST_AUTO_TEST_CASE(stream_calls_check_their_arguments) {
 BOOST_AUTO_TEST_CASE(cursor_counter_stops_before_the_pixel_stream) {
     const stipple::Sampler sampler("stratified", 4, 1);
     stipple::PixelSampleCursor cursor(sampler);
-    cursor.start({3, 5}, 1, stipple::PixelSampleCursor::kPixelDimension - 1);
+    cursor.start({3, 5}, 1, STIPPLE_STREAM_RESERVED_FIRST - 1);
     BOOST_CHECK_NO_THROW(cursor.get1D()); // the last dimension the counter may use
     try {
         cursor.get2D();

@@ -1,2 +1,3 @@
-// header_hpp.cpp — stipple.hpp compiles alone as strict C++17 (shim.header_hpp).
+// header_hpp.cpp — stipple.hpp compiles alone as strict C++11 to C++20, with and without exceptions
+// (shim.header_hpp, shim.header_hpp_cxx11, shim.header_hpp_no_exceptions).
 #include <stipple/stipple.hpp>

@@ -10,6 +10,7 @@ namespace stipple::validation {
 const char* const kValidateUsage =
     "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
     "                        [--shard i/n] [--references-only] [--quiet] [--merge DIR1 DIR2 ...]\n"
+    "                        [--allow-renderer | --renderer PROGRAM]\n"
     "       stipple-validate --version | --help\n"
     "Runs the matrix's scenes x patterns x spp x seeds, measures RMS against cached references and render time,\n"
     "checks the matrix's claims and writes an HTML report. An option's value may follow as the next argument or\n"
@@ -25,6 +26,10 @@ const char* const kValidateUsage =
     "                     left to --merge (default: 1/1, the whole matrix)\n"
     "  --references-only  make the references (of this shard's scenes) in the cache and stop (default: off)\n"
     "  --merge DIR...     combine shard report folders into the report a single run makes (default: off)\n"
+    "  --allow-renderer   run the external renderer commands the matrix names (default: off; a matrix alone runs\n"
+    "                     no program)\n"
+    "  --renderer PROGRAM run PROGRAM as the external renderer, in place of the program of the matrix's commands\n"
+    "                     (default: none)\n"
     "  -q, --quiet        no progress, tables or summary: only warnings, errors and the exit status (default: off)\n"
     "  -h, --help         this text; --version: the version line\n"
     "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
@@ -92,6 +97,11 @@ Args parseArgs(const std::vector<std::string>& argv) {
         } else if (s == "-q" || s == "--quiet") {
             flag();
             a.quiet = true;
+        } else if (s == "--allow-renderer") {
+            flag();
+            a.allowRenderer = true;
+        } else if (s == "--renderer") {
+            a.renderer = value();
         } else if (s == "--merge") {
             if (attached) a.merge.push_back(value());
             while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) {

@@ -23,6 +23,9 @@ struct Args {
     std::vector<std::string> merge;
     bool help = false;    // -h / --help: print kValidateUsage and stop
     bool version = false; // --version: print the version line and stop
+    // External renderers (a matrix's 'renderer'): run the matrix's own command, or this program in its place.
+    bool allowRenderer = false;
+    std::string renderer;
 };
 
 // argv without the program name. Throws UsageError.

@@ -115,6 +115,7 @@ int main(int argc, char** argv) {
             o.shardIndex = args.shardIndex;
             o.shardCount = args.shardCount;
             o.referencesOnly = args.referencesOnly;
+            o.renderer = {args.allowRenderer, args.renderer};
             results = runMatrix(matrix, o);
         }
         if (args.referencesOnly) {

@@ -1,4 +1,5 @@
 #include "matrix.h"
+#include "external_command.h"
 
 #include "report.h"
 
@@ -121,6 +122,23 @@ struct Parser {
                            kBlueNoise + ")");
         return p;
     }
+    // renderer: { command: [program, arg, ...], format: exr | pfm } (external_renderer.h).
+    ExternalCommand renderer(const yaml::Node& node) const {
+        expectMap(node, "renderer");
+        onlyKeys(node, {"command", "format"}, "renderer");
+        ExternalCommand r;
+        r.where = yaml.where(node);
+        const yaml::Node command = required(node, "command", "renderer");
+        if (!command.IsSequence() || command.size() == 0)
+            fail(command, "command must be a list: the program, then its arguments (no shell)");
+        for (const auto& a : command) r.command.push_back(get<std::string>(a, "a command argument"));
+        if (const std::string why = checkCommandTemplate(r.command); !why.empty()) fail(command, why);
+        if (node["format"]) {
+            r.format = get<std::string>(node["format"], "format");
+            if (r.format != "exr" && r.format != "pfm") fail(node["format"], "format must be exr or pfm");
+        }
+        return r;
+    }
     const yaml::Node required(const yaml::Node& map, const std::string& key, const std::string& what) const {
         const yaml::Node n = map[key];
         if (!n) fail(map, what + " needs '" + key + "'");
@@ -142,8 +160,11 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
             ms.file = P.get<std::string>(s, "scene file");
         } else {
             P.expectMap(s, "a scene entry");
-            P.onlyKeys(s, {"file", "name", "width", "height", "integrator", "max_depth", "reference_spp", "regions"},
+            P.onlyKeys(s,
+                       {"file", "name", "width", "height", "integrator", "max_depth", "reference_spp", "regions",
+                        "renderer"},
                        "a scene entry");
+            if (s["renderer"]) ms.renderer = P.renderer(s["renderer"]);
             ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
             if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
             if (s["width"]) ms.width = P.imageSide(s["width"], "width");
@@ -190,6 +211,12 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                                                s["max_depth"].Scalar());
             }
         }
+        if (ms.renderer.empty() && croot["renderer"]) ms.renderer = P.renderer(croot["renderer"]);
+        // An external renderer has no scene defaults to fall back on, and no integrator or depth of ours.
+        if (!ms.renderer.empty() && (!ms.width || !ms.height))
+            P.fail(s, "a scene rendered by an external renderer needs its width and height");
+        if (!ms.renderer.empty() && (!ms.integrator.empty() || ms.maxDepth >= 0))
+            P.fail(s, "integrator and max_depth are stipple-render's; the external renderer has its own");
         ms.path = resolve(ms.file);
         std::error_code fileError; // the throwing overload aborted the run on a name too long for the system
         if (!fs::is_regular_file(ms.path, fileError))
@@ -452,7 +479,8 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     const yaml::Node& croot = root;
     P.onlyKeys(
         croot,
-        {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop", "baseline", "checks"},
+        {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop", "baseline", "checks",
+         "renderer"},
         "the matrix");
 
     Matrix m;

@@ -22,6 +22,15 @@ struct Region {
     double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
 };
 
+// A host renderer run as a program (external_renderer.h): its command template, an argument vector with
+// placeholders, and the format of the image it writes at {output}. Empty: stipple-render, in-process.
+struct ExternalCommand {
+    std::vector<std::string> command;
+    std::string format = "exr"; // exr | pfm: the extension of {output}
+    std::string where;          // file:line:column of the template in the matrix
+    bool empty() const { return command.empty(); }
+};
+
 struct MatrixScene {
     std::string name;          // used by checks and in the report; default: the file's stem
     std::string file;          // as written in the matrix
@@ -31,6 +40,7 @@ struct MatrixScene {
     int maxDepth = -1;         // -1: the scene's
     uint32_t referenceSpp = 0; // 0: the matrix's reference spp (a noisy scene may need more)
     std::vector<Region> regions;
+    ExternalCommand renderer; // the scene's, else the matrix's; empty: stipple-render
 };
 
 struct ReferenceSettings {

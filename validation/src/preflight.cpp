@@ -64,6 +64,7 @@ std::map<std::string, std::string> preflight(const PreflightInputs& in) {
     std::map<std::string, std::string> failed;
     if (!in.matrix) return failed;
     for (const MatrixScene& s : in.matrix->scenes) {
+        if (!s.renderer.empty()) continue; // an external renderer's scene file is in its own format
         try {
             render::checkSceneFile(s.path);
         } catch (const std::bad_alloc&) {

@@ -1,4 +1,5 @@
 #include "run_fingerprint.h"
+#include "external_renderer.h"
 
 #include <exception>
 
@@ -34,6 +35,7 @@ Fingerprint fingerprintRun(const Matrix& m, std::vector<std::optional<SceneFinge
     std::vector<SceneFingerprint> scenes;
     for (size_t i = 0; i < m.scenes.size(); ++i) {
         const MatrixScene& ms = m.scenes[i];
+        if (!known[i] && !ms.renderer.empty()) known[i] = externalFingerprint(ms, ms.referenceSpp ? ms.referenceSpp : m.reference.spp);
         if (!known[i]) {
             // Not rendered by this shard: loaded for its settings only (a scene that does not load stays
             // "not loaded", as in the shards that tried to render it and skipped it).

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
+#include <stdlib.h>
 
 #include <stipple/render/renderer.h>
 
@@ -146,6 +148,46 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
     }
 }
 
+// A scene of an external renderer: the program, a private folder for the images it writes, and what the report
+// and the fingerprint say about it.
+struct ExternalScene {
+    const MatrixScene& ms;
+    std::string workDir;
+    ExternalRenderer renderer;
+    ExternalScene(const MatrixScene& scene, const RendererPermission& permission)
+        : ms(scene), workDir(makeWorkDir()), renderer(scene, permission, workDir) {}
+    ~ExternalScene() {
+        std::error_code ignored;
+        fs::remove_all(workDir, ignored);
+    }
+    ExternalScene(const ExternalScene&) = delete;
+    ExternalScene& operator=(const ExternalScene&) = delete;
+
+    static std::string makeWorkDir() {
+        std::string dir = (fs::temp_directory_path() / "stipple-validate-XXXXXX").string();
+        if (!mkdtemp(dir.data())) throw std::runtime_error("cannot make a temporary folder for an external renderer");
+        return dir;
+    }
+    render::RenderOptions options(int threads) const {
+        render::RenderOptions o;
+        o.width = ms.width;
+        o.height = ms.height;
+        o.threads = threads;
+        return o;
+    }
+    SceneInfo info(const render::RenderOptions& base) const {
+        SceneInfo info;
+        info.name = ms.name;
+        info.file = ms.file;
+        info.contentHash = renderer.contentHash();
+        info.integrator = renderer.description();
+        info.width = base.width;
+        info.height = base.height;
+        return info;
+    }
+    SceneFingerprint fingerprint(uint32_t referenceSpp) const { return externalFingerprint(ms, referenceSpp); }
+};
+
 } // namespace
 
 Results runMatrix(const Matrix& m, const RunOptions& opt) {
@@ -170,20 +212,34 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
         try {
             progress.pause();
             progress.note("loading " + ms.path);
-            const std::unique_ptr<render::Scene> scene = loadMatrixScene(ms, m, opt);
-            const render::RenderOptions base = resolveRenderOptions(ms, *scene, threads);
+            // The scene in-process (stipple-render's library) or through its external renderer.
+            std::unique_ptr<render::Scene> scene;
+            std::optional<ExternalScene> external;
+            if (ms.renderer.empty())
+                scene = loadMatrixScene(ms, m, opt);
+            else
+                external.emplace(ms, opt.renderer);
+            const render::RenderOptions base =
+                scene ? resolveRenderOptions(ms, *scene, threads) : external->options(threads);
+            auto renderCell = [&](const render::RenderOptions& o) {
+                return scene ? scene->render(o) : external->renderer.render(o);
+            };
 
-            SceneInfo info = sceneInfo(ms, *scene, base);
+            SceneInfo info = scene ? sceneInfo(ms, *scene, base) : external->info(base);
 
             render::RenderOptions refOptions = base;
             refOptions.pattern = m.reference.pattern;
             refOptions.spp = ms.referenceSpp ? ms.referenceSpp : m.reference.spp;
             refOptions.seed = m.reference.seed;
-            fingerprinted[si] = describeScene(ms, *scene, base, refOptions.spp);
-            progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d (key %s)", ms.name.c_str(),
+            fingerprinted[si] = scene ? describeScene(ms, *scene, base, refOptions.spp)
+                                      : external->fingerprint(refOptions.spp);
+            progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d%s", ms.name.c_str(),
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
-                              base.width, base.height, referenceKey(*scene, refOptions).c_str()));
-            Reference ref = loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir);
+                              base.width, base.height,
+                              scene ? (" (key " + referenceKey(*scene, refOptions) + ")").c_str()
+                                    : (" by " + info.integrator).c_str()));
+            Reference ref = scene ? loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir)
+                                  : external->renderer.reference(refOptions, m.seeds, opt.cacheDir);
             if (!ref.cacheProblem.empty())
                 progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem +
                               "): rendered again");
@@ -206,7 +262,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             std::vector<double> regionFloors;
             for (const Region& region : ms.regions) regionFloors.push_back(regionNoiseFloor(ref.variance, region));
 
-            info.warmupSeconds = warmUp(*scene, base, m);
+            info.warmupSeconds = scene ? warmUp(*scene, base, m) : 0; // a program's start-up is part of its time
 
             for (size_t gi = 0; gi < mine.size(); ++gi) {
                 const CellGroup& g = mine[gi];
@@ -217,7 +273,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     o.pattern = pattern;
                     o.spp = g.spp;
                     o.seed = g.seed;
-                    render::RenderResult r = scene->render(o);
+                    render::RenderResult r = renderCell(o);
                     ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
                     addImageMetrics(row, ref, r.image, ms, regionFloors);
                     results.rows.push_back(row);

@@ -1,4 +1,5 @@
-// Runs a matrix's cells in-process through the renderer library: each scene is loaded once, its reference
+// Runs a matrix's cells in-process through the renderer library (or, for a scene with an external renderer, through
+// that program: external_renderer.h): each scene is loaded once, its reference
 // made or read from the cache, then every (spp, seed) group renders all patterns back to back (interleaved,
 // order rotated per group) so slow drifts of a shared machine hit every pattern alike.
 #pragma once
@@ -6,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "external_renderer.h"
 #include "matrix.h"
 #include "results.h"
 
@@ -18,6 +20,7 @@ struct RunOptions {
     int shardIndex = 1, shardCount = 1;            // this run does the groups g with g mod n == i − 1
     bool referencesOnly = false;                   // make (or check) the references of this shard's scenes, no cells
     std::map<std::string, std::string> unloadable; // scene name -> error found by the preflight: skipped
+    RendererPermission renderer;                   // what the command line allows external renderers to run
 };
 
 // One group = one (scene, spp, seed): the unit of sharding, so the patterns of a group stay interleaved.

@@ -20,7 +20,7 @@ double emptyClockInterval() {
 
 PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, uint32_t spp, uint64_t seed,
                            const SampleLayout& layout)
-    : shim_(shim), spp_(spp), layout_(layout) {
+    : spp_(spp), layout_(layout) {
     const stipple_api& api = shim.api();
     // "<name>" or "<name>+blue-noise" (the shim's STIPPLE_SAMPLER_FLAG_BLUE_NOISE); names come from the shim.
     static const std::string kBlueNoise = "+blue-noise";
@@ -56,13 +56,12 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
     desc.seed = seed;
     desc.dimensions = dims.data();
     desc.flags = flags;
-    if (api.sampler_create(&desc, &sampler_) != STIPPLE_OK)
+    const stipple::Status created = stipple::Sampler::create(sampler_, desc, api);
+    if (!created.ok())
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
-                        std::to_string(dims.size()) + " dimensions: " + shim.lastError());
+                        std::to_string(dims.size()) + " dimensions: " + created.message());
     clockSeconds_ = emptyClockInterval();
 }
-
-PixelSampler::~PixelSampler() { shim_.api().sampler_release(sampler_); }
 
 void PixelSampler::startPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
     out.x_ = x;
@@ -71,9 +70,11 @@ void PixelSampler::startPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
 }
 
 void PixelSampler::drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const {
-    if (shim_.api().sampler_fill_pixel(sampler_, x, y, d, out, count) != STIPPLE_OK)
+    // The kit's Pixel is signed; the ABI reads the same 32 bits either way.
+    const stipple::Status s = sampler_.fillPixel(stipple::Pixel{int32_t(x), int32_t(y)}, d, out, count);
+    if (!s.ok())
         throw ShimError("stipple_sampler_fill_pixel(" + std::to_string(x) + ", " + std::to_string(y) + ", dimension " +
-                        std::to_string(d) + ") failed: " + shim_.lastError());
+                        std::to_string(d) + ") failed: " + s.message());
 }
 
 PixelSamples::PixelSamples(const PixelSampler& sampler) : sampler_(&sampler) {

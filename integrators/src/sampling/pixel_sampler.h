@@ -12,6 +12,8 @@
 #include "sampling/warps.h"
 #include "sampling/shim_loader.h"
 
+#include <stipple/stipple.hpp>
+
 #include <vector>
 
 namespace stipple::render {
@@ -24,7 +26,6 @@ public:
     // unknown name and ShimError with the shim's message when the layout is rejected.
     PixelSampler(const ShimLibrary& shim, const std::string& pattern, uint32_t spp, uint64_t seed,
                  const SampleLayout& layout);
-    ~PixelSampler();
     PixelSampler(const PixelSampler&) = delete;
     PixelSampler& operator=(const PixelSampler&) = delete;
 
@@ -38,8 +39,7 @@ private:
     // All N samples' k values of dimension d into out (N*k*arity floats). Throws ShimError on failure.
     void drawPixel(uint32_t x, uint32_t y, uint32_t d, float* out, size_t count) const;
 
-    const ShimLibrary& shim_;
-    stipple_sampler sampler_ = nullptr;
+    stipple::Sampler sampler_; // stipple.hpp's owner of the handle, over the loaded library's table
     double clockSeconds_ = 0; // an empty steady_clock interval
     uint32_t spp_;
     SampleLayout layout_;

@@ -1,11 +1,13 @@
 #include "sampling/shim_loader.h"
 
 #include <stipple/render/content_hash.h>
+#include <stipple/stipple.hpp>
 
 #include <dlfcn.h>
 #include <unistd.h>
 
 #include <climits>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -28,8 +30,9 @@ std::string exeDirectory() {
     return slash == std::string::npos ? std::string{} : exe.substr(0, slash);
 }
 
-// Size of the first released table (ABI 1.0): everything up to sampler_sample_independent.
-constexpr size_t kMinimumApiSize = sizeof(stipple_api);
+// The renderer needs ABI 1.1 or later (stipple.hpp's Sampler, which PixelSampler holds, needs the 1.1 table): a
+// table up to sampler_stream_fill. A 1.0 library is refused with this size in the message.
+constexpr size_t kMinimumApiSize = offsetof(stipple_api, sampler_stream_fill) + sizeof(stipple_api::sampler_stream_fill);
 
 } // namespace
 
@@ -120,7 +123,9 @@ std::string ShimLibrary::hashIdentity() const {
 
 std::vector<std::string> ShimLibrary::patternNames() const {
     std::vector<std::string> names;
-    for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p) {
+    if (stipple::patternNames(names, *api_).ok()) return names; // ABI 1.2: the library's own listing
+    names.clear();
+    for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p) { // 1.1: the ids this header knows
         const char* name = nullptr;
         if (api_->pattern_name(p, &name) != STIPPLE_OK || !name) break; // an older library serves fewer
         names.emplace_back(name);

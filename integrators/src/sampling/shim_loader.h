@@ -20,7 +20,7 @@ class ShimLibrary {
 public:
     // Search order: explicitPath (--shim), $STIPPLE_SHIM, <exe dir>/../lib/libstipple.so.1,
     // <exe dir>/libstipple.so.1, then the dynamic linker's own search for "libstipple.so.1".
-    // Throws ShimError listing every place tried when none loads or the ABI does not match.
+    // Throws ShimError listing every place tried when none loads or the ABI does not match (major 1, minor >= 1).
     static const ShimLibrary& get(const std::string& explicitPath = "");
 
     const stipple_api& api() const { return *api_; }

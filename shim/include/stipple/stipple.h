@@ -65,7 +65,7 @@ extern "C" {
 #endif
 
 #define STIPPLE_ABI_MAJOR 1
-#define STIPPLE_ABI_MINOR 1
+#define STIPPLE_ABI_MINOR 2
 
 /* ---- status codes --------------------------------------------------------------------------------- */
 typedef int32_t stipple_status;
@@ -198,6 +198,48 @@ STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, 
                                                        uint32_t first_sample, uint32_t sample_count, uint32_t dimension,
                                                        uint32_t arity, float* out, size_t out_count);
 
+/* ---- 1.2: sample arrays, pattern listing and limits, flags by name ------------------------------------- */
+
+/* Array streams: k values per sample of one array (pbrt-v3's Get1DArray / Get2DArray), stratified as one set of
+ * N*k points per pixel and block, as a declared dimension of count k is: sample i's values are points i*k .. i*k+k-1
+ * of block i / N. Array (index, arity, k) is keyed in an index space of its own: array a is never call-order
+ * stream a (not even with k = 1), and arrays of different arity or k are independent sets. Any array index
+ * (uint32) is served; 1 <= k <= STIPPLE_MAX_VALUES_PER_SAMPLE and k*N within the pattern's max_set_size
+ * (stipple_pattern_get_limits), else STIPPLE_ERROR_OUT_OF_RANGE. */
+
+/* The k values of array (array_index, arity, k) for one sample: k*arity floats, out[j * arity + c]. */
+STIPPLE_API stipple_status stipple_sampler_array(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                 uint32_t sample_index, uint32_t array_index, uint32_t arity,
+                                                 uint32_t k, float* out, size_t out_count);
+/* Samples first_sample .. first_sample + sample_count - 1 of one array: sample_count*k*arity floats,
+ * out[((i * k) + j) * arity + c], equal bitwise to sample_count stipple_sampler_array calls. */
+STIPPLE_API stipple_status stipple_sampler_array_fill(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                      uint32_t first_sample, uint32_t sample_count,
+                                                      uint32_t array_index, uint32_t arity, uint32_t k, float* out,
+                                                      size_t out_count);
+
+/* Stream indices STIPPLE_STREAM_RESERVED_FIRST .. 0xffffffff are reserved for the streams stipple.hpp uses itself
+ * (the film position within the pixel: 0xffffffff). A host's own call counters stay below. */
+#define STIPPLE_STREAM_RESERVED_FIRST 0xffffff00u
+
+/* Pattern listing: ids 0 .. count-1 (stipple_pattern_name gives each one's name). */
+STIPPLE_API stipple_status stipple_pattern_count(uint32_t* out_count);
+
+/* What a pattern serves, to check sizes before creating a sampler or asking an array. */
+typedef struct stipple_pattern_limits {
+    uint32_t struct_size;           /* set by the caller to sizeof(stipple_pattern_limits) */
+    uint32_t max_samples_per_pixel; /* the largest N */
+    uint32_t max_set_size;          /* the largest k*N of one dimension or array */
+    uint32_t max_values_per_sample; /* the largest k */
+    uint32_t max_dimensions;        /* the largest dimension_count */
+    uint32_t flags;                 /* STIPPLE_SAMPLER_FLAG_* bits the pattern accepts */
+} stipple_pattern_limits;
+STIPPLE_API stipple_status stipple_pattern_get_limits(uint32_t pattern, stipple_pattern_limits* out_limits);
+
+/* "<pattern>" or "<pattern>+blue-noise" -> pattern id and STIPPLE_SAMPLER_FLAG_* bits (the tools' spelling).
+ * stipple_pattern_from_name accepts the bare names only. */
+STIPPLE_API stipple_status stipple_pattern_parse(const char* name, uint32_t* out_pattern, uint32_t* out_flags);
+
 /* ---- the dlopen entry point --------------------------------------------------------------------------- */
 typedef struct stipple_api {
     uint32_t struct_size; /* sizeof the table this library provides; grows with minor versions */
@@ -221,6 +263,14 @@ typedef struct stipple_api {
     stipple_status (*sampler_stream)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
     stipple_status (*sampler_stream_fill)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t,
                                           float*, size_t);
+    /* 1.2 (present when struct_size >= offsetof(stipple_api, pattern_parse) + sizeof(void*)) */
+    stipple_status (*sampler_array)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, float*,
+                                    size_t);
+    stipple_status (*sampler_array_fill)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t,
+                                         uint32_t, float*, size_t);
+    stipple_status (*pattern_count)(uint32_t*);
+    stipple_status (*pattern_get_limits)(uint32_t, stipple_pattern_limits*);
+    stipple_status (*pattern_parse)(const char*, uint32_t*, uint32_t*);
 } stipple_api;
 
 /* Returns the function table for ABI major version abi_major, or STIPPLE_ERROR_ABI_VERSION (with a

@@ -1,20 +1,30 @@
-// stipple.hpp — a header-only C++17 kit over the C ABI (stipple.h) for hosts that consume samples by call order.
+// stipple.hpp — the header-only C++ kit over the C ABI (stipple.h). C++11 and later; works with and without
+// exceptions.
 //
-//   stipple::Sampler sampler("stratified", 64, seed);         // no layout: streams only (ABI 1.1)
-//   stipple::PixelSampleCursor cursor(sampler);                // one per thread
-//   cursor.start({x, y}, sampleIndex);                         // like pbrt-v4's Sampler::StartPixelSample
-//   auto film = cursor.getPixel2D();                           // its own stream, not counted
-//   float u = cursor.get1D();  auto uv = cursor.get2D();       // dimension 0, 1, ...: the call counter
+//   stipple::Sampler sampler("sobol+blue-noise", 64, seed);    // no layout: streams and arrays (ABI 1.1 / 1.2)
+//   if (!sampler) { /* sampler.status().message() */ }          // (with exceptions the constructor throws instead)
+//   stipple::PixelSampleCursor cursor(sampler);                 // one per thread
+//   cursor.start(stipple::Pixel{x, y}, sampleIndex);            // like pbrt-v4's Sampler::StartPixelSample
+//   std::array<float, 2> film = cursor.getPixel2D();            // its own stream, not counted
+//   float u = cursor.get1D();  std::array<float, 2> uv = cursor.get2D();  // stream 0, 1, ...: the call counter
+//   const float* lights = cursor.get2DArray(4);                 // 4 (u, v) pairs, one array of 4 N points
 //
-// Values are a pure function of (seed, pixel, sample index, dimension index, arity): any thread, any order.
-// Every sample index is served (index i reads block i / N: each N consecutive indices form a full set), so a
-// host may render 16 samples, then 16 more, or add samples to some pixels only.
+// Values are a pure function of (seed, pixel, sample index, stream index, arity [, k]): any thread, any order.
+// Every sample index is served (index i reads block i / N: each N consecutive indices form a full set).
 //
-// Errors: every failing C call throws stipple::Error (status + the library's message). Nothing else throws
-// except std::bad_alloc.
+// The cursor is the fast path: it fetches each (pixel, stream, arity) with one batch call for the rest of the
+// sample's block on first use and serves the following samples of that pixel from its cache (see
+// PixelSampleCursor). Sampler's per-value calls (stream, array) are one C call each.
 //
-// Loading: a linking host (-lstipple) uses the constructors as shown; a dlopen host passes the function table
-// it got from stipple_get_api (struct_size must show the 1.1 functions; Error otherwise).
+// Errors. Every operation has a form that returns a stipple::Status (the C status and the library's message);
+// those never throw. Built with exceptions, the value-returning conveniences (the Sampler constructors, the
+// cursor's get*) throw stipple::Error; built with -fno-exceptions (or STIPPLE_HPP_EXCEPTIONS defined to 0) they
+// record the failure instead: `if (!sampler)` / `sampler.status()`, `cursor.status()` (the first failure since
+// the last start(); the values of a failing call are 0). std::bad_alloc is the only other exception.
+//
+// Loading: a linking host (-lstipple) uses the defaults as shown; a dlopen host passes the function table it got
+// from stipple_get_api as the last argument (streams need a 1.1 table, arrays, listing and limits a 1.2 one; an
+// older table gives STIPPLE_ERROR_ABI_VERSION for those calls only).
 #ifndef STIPPLE_STIPPLE_HPP
 #define STIPPLE_STIPPLE_HPP
 
@@ -23,12 +33,49 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
+
+#ifndef STIPPLE_HPP_EXCEPTIONS
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+#define STIPPLE_HPP_EXCEPTIONS 1
+#else
+#define STIPPLE_HPP_EXCEPTIONS 0
+#endif
+#endif
+#if STIPPLE_HPP_EXCEPTIONS
+#include <stdexcept>
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define STIPPLE_HPP_MUST_USE __attribute__((warn_unused_result))
+#else
+#define STIPPLE_HPP_MUST_USE
+#endif
 
 namespace stipple {
 
+// The outcome of one operation: STIPPLE_OK, or a failing status with the library's message (which names the
+// argument, its value and what was expected).
+class Status {
+public:
+    Status() : code_(STIPPLE_OK) {}
+    Status(stipple_status code, const std::string& message) : code_(code), message_(message) {}
+    bool ok() const { return code_ == STIPPLE_OK; }
+    stipple_status code() const { return code_; }
+    const std::string& message() const { return message_; }
+    void swap(Status& other) noexcept {
+        std::swap(code_, other.code_);
+        message_.swap(other.message_);
+    }
+
+private:
+    stipple_status code_;
+    std::string message_;
+};
+
+#if STIPPLE_HPP_EXCEPTIONS
 class Error : public std::runtime_error {
 public:
     Error(stipple_status status, const std::string& message) : std::runtime_error(message), status_(status) {}
@@ -37,146 +84,493 @@ public:
 private:
     stipple_status status_;
 };
+// Throws Error for a failing status: the bridge from the status forms to exceptions.
+inline void check(const Status& status) {
+    if (!status.ok()) throw Error(status.code(), status.message());
+}
+#endif
 
-inline void check(const stipple_api& api, stipple_status status) {
-    if (status != STIPPLE_OK) throw Error(status, api.last_error_message());
+namespace kit_detail {
+
+inline Status statusOf(const stipple_api& api, stipple_status code) {
+    if (code == STIPPLE_OK) return Status();
+    return Status(code, api.last_error_message ? api.last_error_message() : "");
+}
+// Whether the table holds the 1.1 (streams) / 1.2 (arrays, listing, limits, flags by name) entries.
+inline bool hasStreams(const stipple_api& api) {
+    return api.struct_size >= offsetof(stipple_api, sampler_stream_fill) + sizeof(api.sampler_stream_fill);
+}
+inline bool hasArrays(const stipple_api& api) {
+    return api.struct_size >= offsetof(stipple_api, pattern_parse) + sizeof(api.pattern_parse);
+}
+inline Status tooOld(const stipple_api& api, const char* what, const char* minor) {
+    return Status(STIPPLE_ERROR_ABI_VERSION, std::string("stipple.hpp: ") + what + " needs libstipple ABI " + minor +
+                                                 "; this library's table is " + std::to_string(api.struct_size) +
+                                                 " bytes, ABI 1." + std::to_string(api.abi_minor));
+}
+// A table with no entries, handed out when the linked library refuses this header's major version (it cannot,
+// given the SONAME): every operation then fails with STIPPLE_ERROR_ABI_VERSION instead of crashing.
+inline const stipple_api& emptyApi() {
+    static const stipple_api empty = stipple_api();
+    return empty;
 }
 
-// The table of the linked library (only for hosts that link -lstipple; a dlopen host never calls this).
+} // namespace kit_detail
+
+// The table of the linked library (only for hosts that link -lstipple; a dlopen host passes its own and never
+// calls this, so it needs no stipple_get_api symbol at link time).
 inline const stipple_api& linkedApi() {
     const stipple_api* api = nullptr;
-    const stipple_status status = stipple_get_api(STIPPLE_ABI_MAJOR, &api);
-    if (status != STIPPLE_OK) throw Error(status, stipple_last_error_message());
+    if (stipple_get_api(STIPPLE_ABI_MAJOR, &api) != STIPPLE_OK || !api) return kit_detail::emptyApi();
     return *api;
 }
 
 // Pixel coordinates are signed (film crop windows and filter footprints reach negative pixels, as pbrt-v4's
 // Point2i does). The C ABI takes uint32: a signed coordinate is passed as its two's-complement bits, a bijection,
-// so every signed pixel gets its own sets and (-1, 0) is not (0, 0).
+// so every signed pixel gets its own sets and (-1, 0) is not (0, 0). An aggregate: Pixel{x, y}.
 struct Pixel {
-    int32_t x = 0, y = 0;
+    int32_t x, y;
 };
 inline uint32_t pixelBits(int32_t coordinate) { return static_cast<uint32_t>(coordinate); }
+inline bool operator==(Pixel a, Pixel b) { return a.x == b.x && a.y == b.y; }
+inline bool operator!=(Pixel a, Pixel b) { return !(a == b); }
+
+// ---- patterns ---------------------------------------------------------------------------------------------------
+
+// The names of the patterns the library serves, in id order ("independent", "stratified", ...). ABI 1.2.
+inline Status patternNames(std::vector<std::string>& out, const stipple_api& api = linkedApi()) STIPPLE_HPP_MUST_USE;
+inline Status patternNames(std::vector<std::string>& out, const stipple_api& api) {
+    out.clear();
+    if (!kit_detail::hasArrays(api)) return kit_detail::tooOld(api, "pattern listing", "1.2");
+    uint32_t count = 0;
+    Status s = kit_detail::statusOf(api, api.pattern_count(&count));
+    for (uint32_t p = 0; s.ok() && p < count; ++p) {
+        const char* name = nullptr;
+        s = kit_detail::statusOf(api, api.pattern_name(p, &name));
+        if (s.ok()) out.push_back(name);
+    }
+    return s;
+}
+
+// What a pattern serves (largest N, largest k * N, largest k, flags), for checks before creating a sampler. The
+// name may carry "+blue-noise". ABI 1.2.
+inline Status patternLimits(const std::string& pattern, stipple_pattern_limits& out,
+                            const stipple_api& api = linkedApi()) STIPPLE_HPP_MUST_USE;
+inline Status patternLimits(const std::string& pattern, stipple_pattern_limits& out, const stipple_api& api) {
+    if (!kit_detail::hasArrays(api)) return kit_detail::tooOld(api, "pattern limits", "1.2");
+    uint32_t id = 0, flags = 0;
+    Status s = kit_detail::statusOf(api, api.pattern_parse(pattern.c_str(), &id, &flags));
+    if (!s.ok()) return s;
+    out = stipple_pattern_limits();
+    out.struct_size = sizeof out;
+    return kit_detail::statusOf(api, api.pattern_get_limits(id, &out));
+}
+
+// One entry of a declared layout (the layout half: fillPixel / sample). An aggregate: {arity, count, "name"}.
+struct LayoutDimension {
+    uint32_t arity;   // 1, 2 or 3 floats per value
+    uint32_t count;   // k >= 1 values per pixel sample
+    std::string name; // optional ("" = unnamed)
+};
+
+// What the sampler reports about one declared dimension (stipple_sampler_get_dimension_info).
+struct DimensionInfo {
+    uint32_t arity, count, floatsPerPixel;
+    std::string name;
+    uint32_t strata[3]; // stratified: strata per axis of the k * N set; others 0
+};
+
+// ---- Sampler ----------------------------------------------------------------------------------------------------
 
 // RAII owner of a stipple_sampler. Move-only. Immutable after creation: share it (by reference) between threads.
 class Sampler {
 public:
-    // Streams only (dimension_count 0): the layout is whatever the host asks for, by call order.
-    Sampler(const std::string& pattern, uint32_t samplesPerPixel, uint64_t seed, const stipple_api& api = linkedApi())
-        : api_(&api) {
-        requireStreams();
-        uint32_t id = 0;
-        check(api, api.pattern_from_name(pattern.c_str(), &id));
-        stipple_sampler_desc desc{};
+    Sampler() : api_(nullptr), sampler_(nullptr), samplesPerPixel_(0), dimensionCount_(0) {}
+
+    // Streams and arrays only (no layout). pattern: a name, optionally with "+blue-noise" (needs ABI 1.2); flags:
+    // more STIPPLE_SAMPLER_FLAG_* bits. Throws Error on failure with exceptions, else records it in status().
+    Sampler(const std::string& pattern, uint32_t samplesPerPixel, uint64_t seed, uint32_t flags = 0,
+            const stipple_api& api = linkedApi())
+        : Sampler() {
+        finish(create(*this, pattern, samplesPerPixel, seed, flags, api));
+    }
+    // With a declared layout (fillPixel / sample serve it; streams and arrays work as well).
+    Sampler(const std::string& pattern, uint32_t samplesPerPixel, uint64_t seed,
+            const std::vector<LayoutDimension>& layout, uint32_t flags = 0, const stipple_api& api = linkedApi())
+        : Sampler() {
+        finish(create(*this, pattern, samplesPerPixel, seed, layout, flags, api));
+    }
+    // Any description.
+    explicit Sampler(const stipple_sampler_desc& desc, const stipple_api& api = linkedApi()) : Sampler() {
+        finish(create(*this, desc, api));
+    }
+
+    // The status forms of the constructors: out is replaced on success, left empty (with status()) on failure.
+    static Status create(Sampler& out, const std::string& pattern, uint32_t samplesPerPixel, uint64_t seed,
+                         uint32_t flags = 0, const stipple_api& api = linkedApi()) {
+        return create(out, pattern, samplesPerPixel, seed, std::vector<LayoutDimension>(), flags, api);
+    }
+    static Status create(Sampler& out, const std::string& pattern, uint32_t samplesPerPixel, uint64_t seed,
+                         const std::vector<LayoutDimension>& layout, uint32_t flags = 0,
+                         const stipple_api& api = linkedApi()) {
+        uint32_t id = 0, nameFlags = 0;
+        Status s = parsePattern(api, pattern, id, nameFlags);
+        if (!s.ok()) return out.fail(api, s);
+        std::vector<stipple_dimension_desc> dims(layout.size(), stipple_dimension_desc());
+        for (size_t d = 0; d < layout.size(); ++d) {
+            dims[d].struct_size = sizeof(stipple_dimension_desc);
+            dims[d].arity = layout[d].arity;
+            dims[d].count = layout[d].count;
+            dims[d].name = layout[d].name.empty() ? nullptr : layout[d].name.c_str();
+        }
+        stipple_sampler_desc desc = stipple_sampler_desc();
         desc.struct_size = sizeof desc;
         desc.pattern = id;
         desc.samples_per_pixel = samplesPerPixel;
         desc.seed = seed;
-        check(api, api.sampler_create(&desc, &sampler_));
-        samplesPerPixel_ = samplesPerPixel;
+        desc.flags = flags | nameFlags;
+        desc.dimension_count = static_cast<uint32_t>(layout.size());
+        desc.dimensions = dims.empty() ? nullptr : dims.data();
+        return create(out, desc, api);
     }
-    // Any description (a declared layout too).
-    explicit Sampler(const stipple_sampler_desc& desc, const stipple_api& api = linkedApi()) : api_(&api) {
-        requireStreams();
-        check(api, api.sampler_create(&desc, &sampler_));
-        samplesPerPixel_ = desc.samples_per_pixel;
+    static Status create(Sampler& out, const stipple_sampler_desc& desc, const stipple_api& api = linkedApi()) {
+        if (!kit_detail::hasStreams(api)) return out.fail(api, kit_detail::tooOld(api, "stipple::Sampler", "1.1"));
+        stipple_sampler handle = nullptr;
+        Status s = kit_detail::statusOf(api, api.sampler_create(&desc, &handle));
+        if (!s.ok()) return out.fail(api, s);
+        Sampler made;
+        made.api_ = &api;
+        made.sampler_ = handle;
+        made.samplesPerPixel_ = desc.samples_per_pixel;
+        made.dimensionCount_ = desc.dimension_count;
+        out = static_cast<Sampler&&>(made);
+        return Status();
     }
-    ~Sampler() {
-        if (sampler_) api_->sampler_release(sampler_);
-    }
-    Sampler(Sampler&& other) noexcept
-        : api_(other.api_), sampler_(std::exchange(other.sampler_, nullptr)), samplesPerPixel_(other.samplesPerPixel_) {
-    }
+
+    ~Sampler() { reset(); }
+    Sampler(Sampler&& other) noexcept : Sampler() { swap(other); }
     Sampler& operator=(Sampler&& other) noexcept {
         if (this != &other) {
-            if (sampler_) api_->sampler_release(sampler_);
-            api_ = other.api_;
-            sampler_ = std::exchange(other.sampler_, nullptr);
-            samplesPerPixel_ = other.samplesPerPixel_;
+            reset();
+            swap(other);
         }
         return *this;
     }
     Sampler(const Sampler&) = delete;
     Sampler& operator=(const Sampler&) = delete;
 
+    explicit operator bool() const { return sampler_ != nullptr; }
+    // Why the last creation into this object failed (ok() when it holds a sampler).
+    const Status& status() const { return status_; }
     stipple_sampler handle() const { return sampler_; }
     const stipple_api& api() const { return *api_; }
     uint32_t samplesPerPixel() const { return samplesPerPixel_; }
+    uint32_t dimensionCount() const { return dimensionCount_; }
 
-    // One value of stream (dimension, arity): arity floats into out.
-    void stream(Pixel pixel, uint32_t sampleIndex, uint32_t dimension, uint32_t arity, float* out) const {
-        check(*api_, api_->sampler_stream(sampler_, pixelBits(pixel.x), pixelBits(pixel.y), sampleIndex, dimension,
-                                          arity, out, arity));
+    // ---- streams (no layout): one value of stream (index, arity), or a run of samples of it (count * arity).
+    Status stream(Pixel pixel, uint32_t sampleIndex, uint32_t index, uint32_t arity, float* out) const
+        STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        return kit_detail::statusOf(*api_, api_->sampler_stream(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                                sampleIndex, index, arity, out, arity));
     }
-    // Samples [firstSample, firstSample + count) of one stream, sample-major (count * arity floats).
-    void streamFill(Pixel pixel, uint32_t firstSample, uint32_t count, uint32_t dimension, uint32_t arity,
-                    float* out) const {
-        check(*api_, api_->sampler_stream_fill(sampler_, pixelBits(pixel.x), pixelBits(pixel.y), firstSample, count,
-                                               dimension, arity, out, size_t(count) * arity));
+    Status streamFill(Pixel pixel, uint32_t firstSample, uint32_t count, uint32_t index, uint32_t arity,
+                      float* out) const STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        return kit_detail::statusOf(*api_,
+                                    api_->sampler_stream_fill(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                              firstSample, count, index, arity, out,
+                                                              size_t(count) * arity));
+    }
+
+    // ---- arrays (ABI 1.2): k values per sample of array (index, arity), one set of k * N points per block.
+    // k * arity floats (array) or count * k * arity (arrayFill), sample-major.
+    Status array(Pixel pixel, uint32_t sampleIndex, uint32_t index, uint32_t arity, uint32_t k, float* out) const
+        STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        if (!kit_detail::hasArrays(*api_)) return kit_detail::tooOld(*api_, "arrays", "1.2");
+        return kit_detail::statusOf(*api_, api_->sampler_array(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                               sampleIndex, index, arity, k, out, size_t(k) * arity));
+    }
+    Status arrayFill(Pixel pixel, uint32_t firstSample, uint32_t count, uint32_t index, uint32_t arity, uint32_t k,
+                     float* out) const STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        if (!kit_detail::hasArrays(*api_)) return kit_detail::tooOld(*api_, "arrays", "1.2");
+        return kit_detail::statusOf(*api_, api_->sampler_array_fill(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                                    firstSample, count, index, arity, k, out,
+                                                                    size_t(count) * k * arity));
+    }
+
+    // ---- the declared layout: all N samples of one dimension (N * k * arity floats, sample-major), or one sample
+    // (k * arity floats); outCount is the capacity of out in floats.
+    Status fillPixel(Pixel pixel, uint32_t dimension, float* out, size_t outCount) const STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        return kit_detail::statusOf(*api_, api_->sampler_fill_pixel(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                                    dimension, out, outCount));
+    }
+    Status sample(Pixel pixel, uint32_t sampleIndex, uint32_t dimension, float* out, size_t outCount) const
+        STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        return kit_detail::statusOf(*api_, api_->sampler_sample(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                                sampleIndex, dimension, out, outCount));
+    }
+    // Past the layout: count independent uniform floats for (pixel, sample index, stream).
+    Status sampleIndependent(Pixel pixel, uint32_t sampleIndex, uint32_t stream, float* out, size_t count) const
+        STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        return kit_detail::statusOf(*api_,
+                                    api_->sampler_sample_independent(sampler_, pixelBits(pixel.x), pixelBits(pixel.y),
+                                                                     sampleIndex, stream, out, count));
+    }
+    Status dimensionInfo(uint32_t dimension, DimensionInfo& out) const STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        stipple_dimension_info info = stipple_dimension_info();
+        info.struct_size = sizeof info;
+        Status s = kit_detail::statusOf(*api_, api_->sampler_get_dimension_info(sampler_, dimension, &info));
+        if (!s.ok()) return s;
+        out.arity = info.arity;
+        out.count = info.count;
+        out.floatsPerPixel = info.floats_per_pixel;
+        out.name = info.name ? info.name : "";
+        for (int c = 0; c < 3; ++c) out.strata[c] = info.strata[c];
+        return s;
+    }
+    Status findDimension(const std::string& name, uint32_t& out) const STIPPLE_HPP_MUST_USE {
+        if (!sampler_) return empty();
+        return kit_detail::statusOf(*api_, api_->sampler_find_dimension(sampler_, name.c_str(), &out));
     }
 
 private:
-    void requireStreams() const {
-        const size_t needed = offsetof(stipple_api, sampler_stream_fill) + sizeof(api_->sampler_stream_fill);
-        if (api_->struct_size < needed)
-            throw Error(STIPPLE_ERROR_ABI_VERSION,
-                        "stipple.hpp needs libstipple ABI 1.1 (streams); this library's table is " +
-                            std::to_string(api_->struct_size) + " bytes, ABI 1." + std::to_string(api_->abi_minor));
+    static Status parsePattern(const stipple_api& api, const std::string& pattern, uint32_t& id, uint32_t& flags) {
+        flags = 0;
+        if (kit_detail::hasArrays(api)) return kit_detail::statusOf(api, api.pattern_parse(pattern.c_str(), &id, &flags));
+        if (!api.pattern_from_name) return kit_detail::tooOld(api, "stipple::Sampler", "1.1");
+        return kit_detail::statusOf(api, api.pattern_from_name(pattern.c_str(), &id)); // 1.1: bare names
+    }
+    Status fail(const stipple_api& api, const Status& why) {
+        reset();
+        api_ = &api;
+        status_ = why;
+        return why;
+    }
+    void finish(const Status& s) {
+#if STIPPLE_HPP_EXCEPTIONS
+        check(s);
+#else
+        (void)s; // recorded in status_
+#endif
+    }
+    Status empty() const {
+        return status_.ok() ? Status(STIPPLE_ERROR_NULL_ARGUMENT, "stipple::Sampler: no sampler (default-constructed "
+                                                                  "or moved from)")
+                            : status_;
+    }
+    void reset() {
+        if (sampler_) api_->sampler_release(sampler_);
+        sampler_ = nullptr;
+        status_ = Status();
+    }
+    void swap(Sampler& other) noexcept {
+        std::swap(api_, other.api_);
+        std::swap(sampler_, other.sampler_);
+        std::swap(samplesPerPixel_, other.samplesPerPixel_);
+        std::swap(dimensionCount_, other.dimensionCount_);
+        status_.swap(other.status_);
     }
 
     const stipple_api* api_;
-    stipple_sampler sampler_ = nullptr;
-    uint32_t samplesPerPixel_ = 0;
+    stipple_sampler sampler_;
+    uint32_t samplesPerPixel_;
+    uint32_t dimensionCount_;
+    Status status_;
 };
 
+// ---- PixelSampleCursor ------------------------------------------------------------------------------------------
+
 // The per-thread view of one pixel sample, shaped like pbrt-v4's sampler interface: start() a pixel sample, then
-// each get1D/get2D/get3D takes the next dimension index (the call counter) with the arity of that call. Skipping
-// calls on data-dependent branches is fine: a dimension index is only a name, values never depend on which
-// indices were asked before. For stratification across the samples of a pixel, a given index should be asked
-// with the same arity in every sample (asking it with another arity is defined: an independent set).
+// each get1D/get2D/get3D takes the next stream index (the call counter) with the arity of that call, and each
+// get1DArray/get2DArray(k) the next array index (a counter of its own, as pbrt-v3's arrays). Skipping calls on
+// data-dependent branches is fine: an index is only a name, values never depend on which indices were asked
+// before. For stratification across the samples of a pixel, ask a given index with the same arity (and k) in
+// every sample (another arity is defined: an independent set).
+//
+// Batching: the first time a (stream, arity) or (array, arity, k) is asked in a pixel, the cursor fetches it for
+// the rest of the sample's block (up to batchSamples() samples) with one stream_fill / array_fill call; later
+// samples of that pixel read the cache. Hosts that loop over the samples of a pixel (pbrt, Mitsuba, Cycles'
+// tiles) pay one C call per (pixel, index) instead of per value. A host that visits a pixel once per pass
+// (sample-major: all pixels at sample 0, then sample 1, ...) sets setBatchSamples(1): one call per value, no waste.
 class PixelSampleCursor {
 public:
-    // getPixel2D's stream: the last dimension index, outside any realistic call count.
-    static constexpr uint32_t kPixelDimension = 0xffffffffu;
+    // getPixel2D's stream: the last stream index (STIPPLE_STREAM_RESERVED_FIRST .. 0xffffffff are the kit's).
+    enum : uint32_t { kPixelStream = 0xffffffffu };
+    // Indices up to this many are cached; larger ones (a start dimension far out) are served per call.
+    enum : uint32_t { kMaxCachedIndex = 4096 };
 
-    explicit PixelSampleCursor(const Sampler& sampler) : sampler_(&sampler) {}
+    explicit PixelSampleCursor(const Sampler& sampler)
+        : sampler_(&sampler), pixel_(Pixel()), sampleIndex_(0), dimension_(0), array_(0),
+          batchSamples_(sampler.samplesPerPixel() ? sampler.samplesPerPixel() : 1), generation_(1), started_(false),
+          failed_(3, 0.0f) {}
+
+    // The largest number of samples one fetch covers (default N; it never crosses a block).
+    void setBatchSamples(uint32_t samples) { batchSamples_ = samples < 1 ? 1 : samples; }
+    uint32_t batchSamples() const { return batchSamples_; }
 
     void start(Pixel pixel, uint32_t sampleIndex, uint32_t dimension = 0) {
+        if (!started_ || pixel != pixel_) ++generation_; // another pixel: every cached batch is stale
+        started_ = true;
         pixel_ = pixel;
         sampleIndex_ = sampleIndex;
         dimension_ = dimension;
+        array_ = 0;
+        if (!status_.ok()) status_ = Status();
     }
     uint32_t dimension() const { return dimension_; }
     uint32_t sampleIndex() const { return sampleIndex_; }
     Pixel pixel() const { return pixel_; }
+    // The first failure since start() (ok() if none). Without exceptions the get* forms report here.
+    const Status& status() const { return status_; }
 
-    float get1D() { return next<1>()[0]; }
-    std::array<float, 2> get2D() { return next<2>(); }
-    std::array<float, 3> get3D() { return next<3>(); }
-    // The film position within the pixel: its own 2D stream (kPixelDimension); does not advance the counter.
-    std::array<float, 2> getPixel2D() const {
-        std::array<float, 2> v{};
-        sampler_->stream(pixel_, sampleIndex_, kPixelDimension, 2, v.data());
-        return v;
+    float get1D() { return *value(next(dimension_++, 1, 0, false)); }
+    std::array<float, 2> get2D() { return pair(next(dimension_++, 2, 0, false)); }
+    std::array<float, 3> get3D() {
+        const float* v = value(next(dimension_++, 3, 0, false));
+        std::array<float, 3> r = {{v[0], v[1], v[2]}};
+        return r;
+    }
+    // The film position within the pixel: its own 2D stream (kPixelStream); does not advance the counter.
+    std::array<float, 2> getPixel2D() {
+        const Batch& b = film_;
+        if (b.generation == generation_ && sampleIndex_ - b.first < b.count)
+            return pair(b.values.data() + size_t(sampleIndex_ - b.first) * 2);
+        return pair(fetch(kPixelStream, 2, 0, false));
+    }
+    // The next array: k values (k floats, or k (u, v) pairs as 2k floats), valid until this cursor's next call.
+    const float* get1DArray(uint32_t k) { return value(next(array_++, 1, k, true)); }
+    const float* get2DArray(uint32_t k) { return value(next(array_++, 2, k, true)); }
+
+    // The status forms: the same values, the status returned (also recorded in status()). Never throw.
+    Status next1D(float& out) STIPPLE_HPP_MUST_USE {
+        const float* v = next(dimension_++, 1, 0, false);
+        out = v[0];
+        return outcome(v);
+    }
+    Status next2D(std::array<float, 2>& out) STIPPLE_HPP_MUST_USE {
+        const float* v = next(dimension_++, 2, 0, false);
+        out[0] = v[0];
+        out[1] = v[1];
+        return outcome(v);
+    }
+    Status next3D(std::array<float, 3>& out) STIPPLE_HPP_MUST_USE {
+        const float* v = next(dimension_++, 3, 0, false);
+        for (int c = 0; c < 3; ++c) out[c] = v[c];
+        return outcome(v);
+    }
+    // The next array of arity 1..3: out points at k * arity floats, valid until this cursor's next call.
+    Status nextArray(uint32_t arity, uint32_t k, const float*& out) STIPPLE_HPP_MUST_USE {
+        out = next(array_++, arity, k, true);
+        return outcome(out);
     }
 
 private:
-    template <size_t Arity>
-    std::array<float, Arity> next() {
-        // The counter never reaches getPixel2D's own stream: that would return the film position's values again.
-        if (dimension_ == kPixelDimension)
-            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "PixelSampleCursor: the call counter reached dimension " +
-                                                        std::to_string(kPixelDimension) +
-                                                        ", which is getPixel2D's stream");
-        std::array<float, Arity> v{};
-        sampler_->stream(pixel_, sampleIndex_, dimension_++, uint32_t(Arity), v.data());
+    // One cached batch: samples [first, first + count) of one (index, arity[, k]) of the current pixel, `floats`
+    // floats per sample from values.data().
+    struct Batch {
+        uint64_t generation;
+        uint32_t shape; // arity | k << 2
+        uint32_t first, count, floats;
+        std::vector<float> values;
+        Batch() : generation(0), shape(0), first(0), count(0), floats(0) {}
+    };
+
+    // A failed call returns failed_.data() (zeros); nothing else does, so the pointer itself says whether it failed.
+    const float* value(const float* v) {
+#if STIPPLE_HPP_EXCEPTIONS
+        if (v == failed_.data()) check(lastError_);
+#endif
         return v;
+    }
+    std::array<float, 2> pair(const float* v) {
+        v = value(v);
+        std::array<float, 2> r = {{v[0], v[1]}};
+        return r;
+    }
+    Status outcome(const float* v) const { return v == failed_.data() ? lastError_ : Status(); }
+
+    // The hot path: a hit in the current pixel's batch of (index, arity[, k]); everything else goes to fetch().
+    const float* next(uint32_t index, uint32_t arity, uint32_t k, bool isArray) {
+        std::vector<Batch>& batches = isArray ? arrays_ : streams_[(arity - 1) % 3];
+        const uint32_t shape = arity | k << 2;
+        if (index < batches.size()) {
+            const Batch& b = batches[index];
+            if (b.generation == generation_ && b.shape == shape && sampleIndex_ - b.first < b.count)
+                return b.values.data() + size_t(sampleIndex_ - b.first) * ((isArray ? k : 1) * arity); // = b.floats
+        }
+        // The call counter never reaches the kit's reserved streams: getPixel2D's would return the film position.
+        if (!isArray && index >= STIPPLE_STREAM_RESERVED_FIRST)
+            return failed(Status(STIPPLE_ERROR_OUT_OF_RANGE,
+                                 "PixelSampleCursor: the call counter reached stream index " + std::to_string(index) +
+                                     ", in the kit's reserved range (getPixel2D's stream and the kit's own)"),
+                          arity);
+        return fetch(index, arity, k, isArray);
+    }
+
+    // A miss: fetch the rest of the sample's block (at most batchSamples_ samples) with one batch call.
+    const float* fetch(uint32_t index, uint32_t arity, uint32_t k, bool isArray) {
+        const uint32_t floats = (isArray ? k : 1) * arity;
+        Batch* batch = slot(index, arity, isArray);
+        if (!batch) return direct(index, arity, k, isArray, floats);
+        const uint64_t n = sampler_->samplesPerPixel() ? sampler_->samplesPerPixel() : 1;
+        const uint64_t blockEnd = sampleIndex_ < n ? n : (uint64_t(sampleIndex_) / n + 1) * n; // no division in block 0
+        uint64_t count = blockEnd - sampleIndex_;
+        if (count > batchSamples_) count = batchSamples_;
+        batch->generation = 0;
+        batch->values.resize(size_t(count) * floats);
+        const Status s = isArray ? sampler_->arrayFill(pixel_, sampleIndex_, uint32_t(count), index, arity, k,
+                                                       batch->values.data())
+                                 : sampler_->streamFill(pixel_, sampleIndex_, uint32_t(count), index, arity,
+                                                        batch->values.data());
+        if (!s.ok()) return failed(s, floats);
+        batch->generation = generation_;
+        batch->shape = arity | k << 2;
+        batch->first = sampleIndex_;
+        batch->count = uint32_t(count);
+        batch->floats = floats;
+        return batch->values.data();
+    }
+    // Indices past the cache (and the film stream): one call per value.
+    const float* direct(uint32_t index, uint32_t arity, uint32_t k, bool isArray, size_t floats) {
+        spill_.resize(floats);
+        const Status s = isArray ? sampler_->array(pixel_, sampleIndex_, index, arity, k, spill_.data())
+                                 : sampler_->stream(pixel_, sampleIndex_, index, arity, spill_.data());
+        if (!s.ok()) return failed(s, floats);
+        return spill_.data();
+    }
+    const float* failed(const Status& s, size_t floats) {
+        if (status_.ok()) status_ = s;
+        lastError_ = s;
+        failed_.assign(floats < 3 ? 3 : floats, 0.0f);
+        return failed_.data();
+    }
+    // The batch of (index, arity[, k]); nullptr past the cache.
+    Batch* slot(uint32_t index, uint32_t arity, bool isArray) {
+        if (arity < 1 || arity > 3) return nullptr;
+        std::vector<Batch>& batches = isArray ? arrays_ : streams_[arity - 1];
+        if (index == kPixelStream && !isArray) return &film_;
+        if (index >= kMaxCachedIndex) return nullptr;
+        if (index >= batches.size()) batches.resize(index + 1);
+        return &batches[index];
     }
 
     const Sampler* sampler_;
-    Pixel pixel_{};
-    uint32_t sampleIndex_ = 0;
-    uint32_t dimension_ = 0;
+    Pixel pixel_;
+    uint32_t sampleIndex_, dimension_, array_, batchSamples_;
+    uint64_t generation_;
+    bool started_;
+    Status status_, lastError_;
+    std::vector<Batch> streams_[3]; // per arity, indexed by stream index
+    std::vector<Batch> arrays_;     // indexed by array index (arity and k checked per use)
+    Batch film_;                    // getPixel2D's stream
+    std::vector<float> spill_, failed_;
 };
 
 } // namespace stipple

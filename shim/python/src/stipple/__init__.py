@@ -15,4 +15,4 @@ from .sampler import CostWarning, Sampler
 
 __all__ = ["CostWarning", "ENVIRONMENT_VARIABLE", "LIBRARY_NAME", "LIMITS", "Library", "Limits", "Sampler",
            "StippleError", "search_path"]
-__version__ = "1.1.0"  # the project's version (CMakeLists.txt); shim.python_sampler checks they agree
+__version__ = "1.2.0"  # the project's version (CMakeLists.txt); shim.python_sampler checks they agree

@@ -1,0 +1,235 @@
+/*
+ * stipple.h — the C ABI of libstipple: deterministic sample streams for Monte Carlo rendering.
+ *
+ * C99 and C++ compatible. Nothing here owns host memory, throws, aborts or prints.
+ *
+ * ABI promise (major version STIPPLE_ABI_MAJOR):
+ *   - Functions are never removed or changed in signature within a major version; new ones are appended to
+ *     the end of stipple_api, whose first field is its own size.
+ *   - Structs passed in begin with struct_size; the library accepts any size >= the size of the first
+ *     released version and ignores nothing silently (unknown trailing fields must be zero).
+ *   - No enum or bool appears in a struct: enumerations are uint32_t with #defined values.
+ *
+ * Loading:
+ *   - dlopen host: dlopen("libstipple.so.1"), dlsym("stipple_get_api"), call it with STIPPLE_ABI_MAJOR.
+ *   - linking host: link -lstipple and call the stipple_* functions directly (same semantics).
+ *
+ * Sample stream semantics:
+ *   - A sampler is made from a pattern, N = samples per pixel, a 64-bit seed and optionally the host's
+ *     dimension layout: an ordered list of dimensions, each of arity 1, 2 or 3 with a count k >= 1 of values
+ *     per pixel sample. Only what is asked for is generated.
+ *   - Streams (1.1; no layout needed, dimension_count may be 0): stipple_sampler_stream asks dimension index d
+ *     (the host's own call counter, any uint32) with the arity it wants at that call. Stream (d, arity) is one
+ *     set of N points of that arity per pixel, randomised independently of every other (d, arity) and of the
+ *     declared layout. Asking one index d with two arities gives two independent sets (the 1D value is not
+ *     the first axis of the 2D one); each is a full set of the pattern on its own. Keep one arity per index
+ *     to keep its stratification across the samples of a pixel.
+ *   - Any sample index (1.1): index i is position i mod N of block i / N. Each block of N consecutive indices
+ *     is a full, independently randomised set of the pattern; sobol's block b is instead the next Sobol' block
+ *     of the same scrambled sequence (blocks 0..2^j-1 together are again a net). stratified (power-of-two
+ *     grids) and poisson order a set so that its prefixes are well spread; sobol and pmj02 are progressive
+ *     (README: "Any sample count"). The same for fill_pixel (block 0), sample, stream and stream_fill, with or
+ *     without STIPPLE_SAMPLER_FLAG_BLUE_NOISE.
+ *   - Every value is a pure function of (seed, pixel x, pixel y, sample index, dimension, value index):
+ *     bitwise the same for any thread count, tile order or call order. A sampler handle is immutable after
+ *     creation and may be shared by any number of threads for sampling.
+ *   - For one pixel and one dimension, the k*N values (k per pixel sample) form one well-distributed set
+ *     of the pattern (one stratification / one Poisson disk set of k*N points). Different dimensions and
+ *     pixels get independently randomised sets, so dimensions are not correlated.
+ *   - Values lie in [0, 1): never 1.0 and never negative.
+ *   - Past the declared layout: fill/sample calls with a dimension index >= dimension_count fail with
+ *     STIPPLE_ERROR_OUT_OF_RANGE. A host that needs values past its layout (for example, bounces deeper
+ *     than it declared) calls stipple_sampler_sample_independent, which serves independent uniform values
+ *     hashed from (seed, pixel, sample index, stream index) — defined, deterministic, never stratified.
+ *
+ * Errors: every function returns a stipple_status. On failure a message for the calling thread, naming the
+ * argument, its value and what was expected, is available from stipple_last_error_message() until the next
+ * failing call on that thread.
+ */
+#ifndef STIPPLE_STIPPLE_H
+#define STIPPLE_STIPPLE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32)
+#define STIPPLE_API
+#elif defined(__GNUC__)
+#define STIPPLE_API __attribute__((visibility("default")))
+#else
+#define STIPPLE_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define STIPPLE_ABI_MAJOR 1
+#define STIPPLE_ABI_MINOR 1
+
+/* ---- status codes --------------------------------------------------------------------------------- */
+typedef int32_t stipple_status;
+#define STIPPLE_OK 0
+#define STIPPLE_ERROR_NULL_ARGUMENT 1    /* a required pointer was NULL */
+#define STIPPLE_ERROR_INVALID_ARGUMENT 2 /* a value outside its allowed set (unknown pattern, arity 4, ...) */
+#define STIPPLE_ERROR_OUT_OF_RANGE 3     /* a count or index too large or zero (N, dimension index, buffer) */
+#define STIPPLE_ERROR_STRUCT_SIZE 4      /* struct_size smaller than the first released version */
+#define STIPPLE_ERROR_ABI_VERSION 5      /* the host was built for another ABI major version */
+#define STIPPLE_ERROR_OUT_OF_MEMORY 6
+#define STIPPLE_ERROR_INTERNAL 7 /* a bug: please report the message */
+
+/* ---- patterns --------------------------------------------------------------------------------------- */
+#define STIPPLE_PATTERN_INDEPENDENT 0u  /* counter-based hash, no shared RNG state */
+#define STIPPLE_PATTERN_STRATIFIED 1u   /* jittered strata; any N (see README for non-square N) */
+#define STIPPLE_PATTERN_POISSON 2u      /* high-quality toroidal Poisson disk sets, amortised */
+#define STIPPLE_PATTERN_POISSON_SEED 3u /* the study's dart throwing (Algorithm 1), generated per set */
+#define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, Burley 2020), padded per dimension */
+#define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points */
+#define STIPPLE_PATTERN_COUNT 6u
+
+/* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
+/* Screen-space blue noise: neighbouring pixels' sets are built together so that the per-pixel error is spread
+ * as blue noise over the image (a lattice map per 64 x 64 tile of pixels; stratified and independent: strata
+ * shared across the tile's pixels; other patterns: per-pixel toroidal shifts of a set shared by the tile). Works
+ * for declared layouts and streams, in every block. Every sample stays uniformly distributed. Unknown bits are
+ * rejected. */
+#define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
+
+/* ---- limits ----------------------------------------------------------------------------------------- */
+#define STIPPLE_MAX_SAMPLES_PER_PIXEL (1u << 20) /* N */
+#define STIPPLE_MAX_VALUES_PER_SAMPLE 1024u      /* k of one dimension */
+#define STIPPLE_MAX_SET_SIZE (1u << 22)          /* k*N of one dimension */
+#define STIPPLE_MAX_DIMENSIONS 4096u
+#define STIPPLE_MAX_NAME_LENGTH 63u
+
+typedef struct stipple_sampler_t* stipple_sampler; /* opaque handle */
+
+/* One entry of the host's dimension layout. */
+typedef struct stipple_dimension_desc {
+    uint32_t struct_size; /* sizeof(stipple_dimension_desc) */
+    uint32_t arity;       /* 1, 2 or 3 floats per value */
+    uint32_t count;       /* k >= 1 values per pixel sample; 0 is read as 1 */
+    uint32_t reserved;    /* must be 0 */
+    const char* name;     /* optional (may be NULL), <= STIPPLE_MAX_NAME_LENGTH chars; copied */
+} stipple_dimension_desc;
+
+typedef struct stipple_sampler_desc {
+    uint32_t struct_size;       /* sizeof(stipple_sampler_desc) */
+    uint32_t pattern;           /* STIPPLE_PATTERN_* */
+    uint32_t samples_per_pixel; /* N, 1..STIPPLE_MAX_SAMPLES_PER_PIXEL */
+    uint32_t dimension_count;   /* 0..STIPPLE_MAX_DIMENSIONS (0 since 1.1: streams only, dimensions unread) */
+    uint64_t seed;              /* any value */
+    const stipple_dimension_desc* dimensions; /* dimension_count entries, copied */
+    uint32_t flags;                           /* STIPPLE_SAMPLER_FLAG_* bits; unknown bits are rejected */
+    uint32_t reserved;                        /* must be 0 */
+} stipple_sampler_desc;
+
+typedef struct stipple_sampler_info {
+    uint32_t struct_size; /* set by the caller to sizeof(stipple_sampler_info) */
+    uint32_t pattern;
+    uint32_t samples_per_pixel;
+    uint32_t dimension_count;
+    uint64_t seed;
+} stipple_sampler_info;
+
+typedef struct stipple_dimension_info {
+    uint32_t struct_size; /* set by the caller to sizeof(stipple_dimension_info) */
+    uint32_t arity;
+    uint32_t count;            /* k */
+    uint32_t floats_per_pixel; /* N * k * arity: the size fill_pixel writes */
+    const char* name;          /* owned by the sampler, "" when unnamed; valid until release */
+    uint32_t strata[3];        /* stratified: strata per axis for the set of k*N points; others 0 */
+    uint32_t reserved;
+} stipple_dimension_info;
+
+/* ---- functions (also reachable through stipple_api) -------------------------------------------------- */
+
+/* The message of the calling thread's last failure ("" if none). Valid until that thread's next failure. */
+STIPPLE_API const char* stipple_last_error_message(void);
+
+STIPPLE_API stipple_status stipple_get_version(uint32_t* major, uint32_t* minor, uint32_t* patch);
+
+/* "independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02" <-> STIPPLE_PATTERN_*. Names are
+ * static strings. */
+STIPPLE_API stipple_status stipple_pattern_from_name(const char* name, uint32_t* out_pattern);
+STIPPLE_API stipple_status stipple_pattern_name(uint32_t pattern, const char** out_name);
+
+STIPPLE_API stipple_status stipple_sampler_create(const stipple_sampler_desc* desc, stipple_sampler* out_sampler);
+/* Releasing NULL is a no-op returning STIPPLE_OK. The handle must not be in use by another thread. */
+STIPPLE_API stipple_status stipple_sampler_release(stipple_sampler sampler);
+
+STIPPLE_API stipple_status stipple_sampler_get_info(stipple_sampler sampler, stipple_sampler_info* out_info);
+STIPPLE_API stipple_status stipple_sampler_get_dimension_info(stipple_sampler sampler, uint32_t dimension,
+                                                              stipple_dimension_info* out_info);
+/* Index of the first dimension with this name; STIPPLE_ERROR_INVALID_ARGUMENT if none. */
+STIPPLE_API stipple_status stipple_sampler_find_dimension(stipple_sampler sampler, const char* name,
+                                                          uint32_t* out_dimension);
+
+/* Batch call (the fast path): all N samples of pixel (x, y) for one dimension.
+ * Writes N*k*arity floats, sample-major: out[((i * k) + j) * arity + c] for sample i, value j, axis c.
+ * out_count is the capacity of out in floats and must be >= N*k*arity. */
+STIPPLE_API stipple_status stipple_sampler_fill_pixel(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                      uint32_t dimension, float* out, size_t out_count);
+
+/* Random access: the k values of one pixel sample for one dimension (k*arity floats), equal bitwise to the
+ * corresponding part of stipple_sampler_fill_pixel. Since 1.1 any sample_index is served: index i >= N reads
+ * block i / N (1.0 returned STIPPLE_ERROR_OUT_OF_RANGE). */
+STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                  uint32_t sample_index, uint32_t dimension, float* out,
+                                                  size_t out_count);
+
+/* Past the layout: out_count independent uniform floats in [0,1) for (pixel, sample index, stream). */
+STIPPLE_API stipple_status stipple_sampler_sample_independent(stipple_sampler sampler, uint32_t pixel_x,
+                                                              uint32_t pixel_y, uint32_t sample_index, uint32_t stream,
+                                                              float* out, size_t out_count);
+
+/* ---- 1.1: streams (no layout needed), any sample index ------------------------------------------------ */
+
+/* One value of stream (dimension, arity) for pixel (x, y), sample sample_index: arity floats (1, 2 or 3).
+ * Works on any sampler (with or without a declared layout); out_count >= arity. */
+STIPPLE_API stipple_status stipple_sampler_stream(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                  uint32_t sample_index, uint32_t dimension, uint32_t arity, float* out,
+                                                  size_t out_count);
+
+/* Batch call of a stream: samples first_sample .. first_sample + sample_count - 1 (sample_count >= 1,
+ * first_sample + sample_count <= 2^32), sample-major: out[i * arity + c]. Equal bitwise to sample_count
+ * stipple_sampler_stream calls. out_count >= sample_count * arity. */
+STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
+                                                       uint32_t first_sample, uint32_t sample_count, uint32_t dimension,
+                                                       uint32_t arity, float* out, size_t out_count);
+
+/* ---- the dlopen entry point --------------------------------------------------------------------------- */
+typedef struct stipple_api {
+    uint32_t struct_size; /* sizeof the table this library provides; grows with minor versions */
+    uint32_t abi_major;
+    uint32_t abi_minor;
+    uint32_t reserved;
+    const char* (*last_error_message)(void);
+    stipple_status (*get_version)(uint32_t*, uint32_t*, uint32_t*);
+    stipple_status (*pattern_from_name)(const char*, uint32_t*);
+    stipple_status (*pattern_name)(uint32_t, const char**);
+    stipple_status (*sampler_create)(const stipple_sampler_desc*, stipple_sampler*);
+    stipple_status (*sampler_release)(stipple_sampler);
+    stipple_status (*sampler_get_info)(stipple_sampler, stipple_sampler_info*);
+    stipple_status (*sampler_get_dimension_info)(stipple_sampler, uint32_t, stipple_dimension_info*);
+    stipple_status (*sampler_find_dimension)(stipple_sampler, const char*, uint32_t*);
+    stipple_status (*sampler_fill_pixel)(stipple_sampler, uint32_t, uint32_t, uint32_t, float*, size_t);
+    stipple_status (*sampler_sample)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
+    stipple_status (*sampler_sample_independent)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, float*,
+                                                 size_t);
+    /* 1.1 (present when struct_size >= offsetof(stipple_api, sampler_stream_fill) + sizeof(void*)) */
+    stipple_status (*sampler_stream)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, float*, size_t);
+    stipple_status (*sampler_stream_fill)(stipple_sampler, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t, uint32_t,
+                                          float*, size_t);
+} stipple_api;
+
+/* Returns the function table for ABI major version abi_major, or STIPPLE_ERROR_ABI_VERSION (with a
+ * message) when this library does not implement it. The table is static: never freed. */
+STIPPLE_API stipple_status stipple_get_api(uint32_t abi_major, const stipple_api** out_api);
+typedef stipple_status (*stipple_get_api_fn)(uint32_t abi_major, const stipple_api** out_api);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* STIPPLE_STIPPLE_H */
