@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-namespace stipple {
+namespace stipple::detail {
 
 struct Dimension {
     uint32_t arity = 1;   // floats per value
@@ -25,4 +25,4 @@ struct Dimension {
     uint32_t floatsPerSample() const { return count * arity; }
 };
 
-} // namespace stipple
+} // namespace stipple::detail
