@@ -7,11 +7,16 @@
 namespace stipple::detail {
 
 // Each defined in its pattern's source file.
-extern const PatternOps kIndependentPattern, kStratifiedPattern, kPoissonPattern, kPoissonSeedPattern,
-    kSobolPattern, kPmj02Pattern;
+extern const PatternOps kIndependentPattern;
+extern const PatternOps kStratifiedPattern;
+extern const PatternOps kPoissonPattern;
+extern const PatternOps kPoissonSeedPattern;
+extern const PatternOps kSobolPattern;
+extern const PatternOps kPmj02Pattern;
 
 namespace {
 
+// Position = public id.
 constexpr const PatternOps* kPatterns[] = {
     &kIndependentPattern, // STIPPLE_PATTERN_INDEPENDENT
     &kStratifiedPattern,  // STIPPLE_PATTERN_STRATIFIED
@@ -21,12 +26,6 @@ constexpr const PatternOps* kPatterns[] = {
     &kPmj02Pattern,       // STIPPLE_PATTERN_PMJ02
 };
 static_assert(std::size(kPatterns) == STIPPLE_PATTERN_COUNT, "one entry per public pattern id, in id order");
-static_assert(kPatterns[STIPPLE_PATTERN_INDEPENDENT] == &kIndependentPattern &&
-              kPatterns[STIPPLE_PATTERN_STRATIFIED] == &kStratifiedPattern &&
-              kPatterns[STIPPLE_PATTERN_POISSON] == &kPoissonPattern &&
-              kPatterns[STIPPLE_PATTERN_POISSON_SEED] == &kPoissonSeedPattern &&
-              kPatterns[STIPPLE_PATTERN_SOBOL] == &kSobolPattern && kPatterns[STIPPLE_PATTERN_PMJ02] == &kPmj02Pattern,
-              "the table's order is the public ids'");
 
 std::string listOf(const std::string* items, size_t count) {
     std::string list;

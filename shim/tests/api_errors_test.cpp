@@ -76,7 +76,8 @@ BOOST_AUTO_TEST_CASE(version_and_pattern_names) {
         BOOST_CHECK_EQUAL(stipple_pattern_from_name(name, &back), STIPPLE_OK);
         BOOST_CHECK_EQUAL(back, p);
     }
-    expectError(stipple_pattern_name(STIPPLE_PATTERN_COUNT, &name), STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is 6");
+    expectError(stipple_pattern_name(STIPPLE_PATTERN_COUNT, &name), STIPPLE_ERROR_INVALID_ARGUMENT,
+                ("pattern is " + std::to_string(STIPPLE_PATTERN_COUNT) + ";").c_str());
     expectError(stipple_pattern_name(0, nullptr), STIPPLE_ERROR_NULL_ARGUMENT, "out_name");
 }
 
