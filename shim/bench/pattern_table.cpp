@@ -496,8 +496,8 @@ int main(int argc, char** argv) {
         for (int dim : {2, 3}) {
             const auto gs = integrands(dim);
             for (uint32_t n : ns) {
-                const stipple::detail::PoissonFamily family(uint32_t(dim), n,
-                                                    stipple::detail::PoissonCache::setCountFor(uint32_t(dim), n));
+                const stipple::detail::PoissonFamily family(
+                    uint32_t(dim), n, stipple::detail::PoissonCache::setCountFor(uint32_t(dim), n));
                 const double t0 = threadSeconds();
                 for (uint32_t j = 0; j < family.setCount(); ++j) family.set(j);
                 const double msPerSet = (threadSeconds() - t0) / family.setCount() * 1e3;
@@ -512,7 +512,8 @@ int main(int argc, char** argv) {
                     for (int t = 0; t < shifts; ++t) {
                         float shift[3];
                         for (int c = 0; c < dim; ++c)
-                            shift[c] = stipple::detail::unitFloat(stipple::detail::hashAt(0x5b1f7 + j, uint64_t(t) * 3 + c));
+                            shift[c] =
+                                stipple::detail::unitFloat(stipple::detail::hashAt(0x5b1f7 + j, uint64_t(t) * 3 + c));
                         for (size_t i = 0; i < size_t(n) * dim; ++i) {
                             float v = base[i] + shift[i % dim];
                             shifted[i] = v - float(v >= 1.0f);

@@ -208,7 +208,8 @@ int main(int argc, char** argv) {
         const std::string wanted = argv[i] + 6;
         bool known = false;
         for (uint32_t isa = 0; isa < 3; ++isa)
-            if (wanted == names[isa]) stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa)), known = true;
+            if (wanted == names[isa])
+                stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa)), known = true;
         if (!known) {
             std::fprintf(stderr, "shim_shim_bench: --isa=%s; expected baseline, avx2 or avx512\n", wanted.c_str());
             return 2;

@@ -74,14 +74,14 @@ constinit const PatternOps kIndependentPattern{
     .prepare = nullptr,
     .prepareStreamsOnFirstUse = false,
     .strata = nullptr,
-    .point = [](const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
-        pointIndependent(set.key, dim, p, out);
-    },
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointIndependent(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                     const CrossPixelStrata& strata) {
-        fillIndependent<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
-    },
+    .fillStrata =
+        [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+           const CrossPixelStrata& strata) {
+            fillIndependent<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
+        },
 };
 
 } // namespace stipple::detail

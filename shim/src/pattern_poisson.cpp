@@ -242,9 +242,8 @@ constinit const PatternOps kPoissonPattern{
     .prepare = [](Dimension& dim) { dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize); },
     .prepareStreamsOnFirstUse = true,
     .strata = nullptr,
-    .point = [](const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
-        pointPoisson(set.key, dim, p, out);
-    },
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointPoisson(set.key, dim, p, out); },
     .fill = {fillPoissonSet<BatchIsa::Baseline>, fillPoissonSet<BatchIsa::Avx2>, fillPoissonSet<BatchIsa::Avx512>},
     .fillStrata = nullptr,
 };
@@ -261,9 +260,8 @@ constinit const PatternOps kPoissonSeedPattern{
     .prepare = nullptr,
     .prepareStreamsOnFirstUse = false,
     .strata = nullptr,
-    .point = [](const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
-        pointPoissonSeed(set.key, dim, p, out);
-    },
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointPoissonSeed(set.key, dim, p, out); },
     .fill = {fillPoissonSeedSet, fillPoissonSeedSet, fillPoissonSeedSet},
     .fillStrata = nullptr,
 };

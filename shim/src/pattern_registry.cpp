@@ -50,8 +50,7 @@ uint32_t patternCount() { return static_cast<uint32_t>(std::size(kPatterns)); }
 
 std::string patternIdList() {
     std::string items[std::size(kPatterns)];
-    for (uint32_t p = 0; p < std::size(kPatterns); ++p)
-        items[p] = std::to_string(p) + " (" + kPatterns[p]->name + ")";
+    for (uint32_t p = 0; p < std::size(kPatterns); ++p) items[p] = std::to_string(p) + " (" + kPatterns[p]->name + ")";
     return listOf(items, std::size(items));
 }
 

@@ -46,14 +46,14 @@ enum class BlueNoiseMode : uint32_t {
 };
 
 struct PatternLimits {
-    uint32_t maxArity = 3;                     // arities 1..maxArity (the ABI's limit is 3)
+    uint32_t maxArity = 3;                      // arities 1..maxArity (the ABI's limit is 3)
     uint32_t maxSetSize = STIPPLE_MAX_SET_SIZE; // k * N of a declared dimension, and N itself (streams serve N)
 };
 
 using PatternFill = void (*)(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 using PatternPoint = void (*)(const SetKey& set, const Dimension& dim, uint32_t p, float* out);
-using PatternStrataFill = void (*)(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count,
-                                   float* out, const CrossPixelStrata& strata);
+using PatternStrataFill = void (*)(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                                   const CrossPixelStrata& strata);
 
 struct PatternOps {
     const char* name; // stipple_pattern_name's

@@ -344,17 +344,18 @@ constinit const PatternOps kStratifiedPattern{
     .limits = {},
     .prepare = [](Dimension& dim) { dim.grid = StrataGrid::choose(dim.arity, dim.setSize); },
     .prepareStreamsOnFirstUse = false,
-    .strata = [](const Dimension& dim, uint32_t* axes) {
-        for (uint32_t c = 0; c < dim.arity; ++c) axes[c] = dim.grid.axis[c];
-    },
-    .point = [](const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
-        pointStratified(set.key, dim, p, out);
-    },
+    .strata =
+        [](const Dimension& dim, uint32_t* axes) {
+            for (uint32_t c = 0; c < dim.arity; ++c) axes[c] = dim.grid.axis[c];
+        },
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointStratified(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                     const CrossPixelStrata& strata) {
-        fillStratified<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
-    },
+    .fillStrata =
+        [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+           const CrossPixelStrata& strata) {
+            fillStratified<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
+        },
 };
 
 } // namespace stipple::detail

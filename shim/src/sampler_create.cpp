@@ -47,8 +47,8 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, const 
     if (count * samplesPerPixel > pattern.limits.maxSetSize)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
                     argument + ": count * samples_per_pixel = " + std::to_string(count * samplesPerPixel) + "; the " +
-                        pattern.name + " pattern serves sets of at most " +
-                        std::to_string(pattern.limits.maxSetSize) + " points");
+                        pattern.name + " pattern serves sets of at most " + std::to_string(pattern.limits.maxSetSize) +
+                        " points");
     Dimension dim = makePatternDimension(pattern, in.arity, count, count * samplesPerPixel);
     if (in.name) {
         const size_t length = strnlen(in.name, STIPPLE_MAX_NAME_LENGTH + 1);

@@ -157,7 +157,8 @@ template <uint32_t Arity>
     for (uint32_t c = 0; c < Arity; ++c) {
         topMask[c] = _mm512_set1_epi32(int(((1u << a.axisBits[c]) - 1u) << (24 - a.axisBits[c])));
         jitterShift[c] = stipple::detail::count(8 + a.axisBits[c]);
-        jitterShift16[c] = stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
+        jitterShift16[c] =
+            stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     for (uint32_t base = 0; base < count; base += 16) {

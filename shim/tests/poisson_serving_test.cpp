@@ -78,10 +78,12 @@ BOOST_AUTO_TEST_CASE(cache_stays_within_its_bound) {
     }
     // ... so once the held ones fill the budget, further families are private and the bound still holds.
     BOOST_CHECK_LE(cache.bytesHeld(), stipple::detail::PoissonCache::kByteBudget);
-    BOOST_CHECK_GE(cache.bytesHeld(), stipple::detail::PoissonCache::kByteBudget - 4 * stipple::detail::PoissonCache::kFamilyBytes);
+    BOOST_CHECK_GE(cache.bytesHeld(),
+                   stipple::detail::PoissonCache::kByteBudget - 4 * stipple::detail::PoissonCache::kFamilyBytes);
     held.clear();
     auto again = cache.acquire(2, 9000); // now unheld families can be evicted to make room
     BOOST_CHECK_LE(cache.bytesHeld(), stipple::detail::PoissonCache::kByteBudget);
     BOOST_CHECK_EQUAL(stipple::detail::PoissonCache::setCountFor(2, 1u << 22), 1u);
-    BOOST_CHECK_EQUAL(stipple::detail::PoissonCache::setCountFor(1, 16), stipple::detail::PoissonCache::kMaxSetsPerFamily);
+    BOOST_CHECK_EQUAL(stipple::detail::PoissonCache::setCountFor(1, 16),
+                      stipple::detail::PoissonCache::kMaxSetsPerFamily);
 }

@@ -48,7 +48,8 @@ BOOST_AUTO_TEST_CASE(generator_prefixes_are_elementary_nets) {
     for (uint64_t seed = 0; seed < 8; ++seed) {
         const std::vector<FixedPoint2> points = stipple::detail::generatePmj02(12, seed);
         for (uint32_t k = 0; k <= 12; ++k)
-            BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(points.data(), k), "pmj02 seed " << seed << " prefix 2^" << k);
+            BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(points.data(), k),
+                                "pmj02 seed " << seed << " prefix 2^" << k);
     }
     // The checker itself fails on a set that is not a net: two points in one column of 2 x 1.
     const FixedPoint2 bad[2] = {{0x10000000u, 0x10000000u}, {0x20000000u, 0x90000000u}};
