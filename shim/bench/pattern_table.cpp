@@ -147,7 +147,7 @@ SlopeEstimate slopeWithInterval(const std::vector<double>& ns, const std::vector
         for (size_t i = 0; i < sq.size(); ++i) {
             double s = 0;
             for (size_t j = 0; j < sq[i].size(); ++j)
-                s += sq[i][stipple::hashAt(seed, (uint64_t(b) << 40) ^ (uint64_t(i) << 24) ^ j) % sq[i].size()];
+                s += sq[i][stipple::detail::hashAt(seed, (uint64_t(b) << 40) ^ (uint64_t(i) << 24) ^ j) % sq[i].size()];
             m.push_back(s / double(sq[i].size()));
         }
         boots.push_back(fitSlope(ns, m));
@@ -294,7 +294,7 @@ int main(int argc, char** argv) {
                         sq[gi][ni].push_back(e * e);
                     }
                     if (n == 1024 && set < 50) {
-                        rhoSum += stipple::pointsets::relativeRadius(2, points.data(), n);
+                        rhoSum += stipple::detail::pointsets::relativeRadius(2, points.data(), n);
                         ++rhoCount;
                     }
                 }
@@ -489,8 +489,8 @@ int main(int argc, char** argv) {
         for (int dim : {2, 3}) {
             const auto gs = integrands(dim);
             for (uint32_t n : ns) {
-                const stipple::PoissonFamily family(uint32_t(dim), n,
-                                                    stipple::PoissonCache::setCountFor(uint32_t(dim), n));
+                const stipple::detail::PoissonFamily family(
+                    uint32_t(dim), n, stipple::detail::PoissonCache::setCountFor(uint32_t(dim), n));
                 const double t0 = threadSeconds();
                 for (uint32_t j = 0; j < family.setCount(); ++j) family.set(j);
                 const double msPerSet = (threadSeconds() - t0) / family.setCount() * 1e3;
@@ -499,13 +499,14 @@ int main(int argc, char** argv) {
                 std::vector<float> shifted(size_t(n) * dim);
                 for (uint32_t j = 0; j < family.setCount(); ++j) {
                     const float* base = family.set(j);
-                    const double rho = stipple::pointsets::relativeRadius(dim, base, n);
+                    const double rho = stipple::detail::pointsets::relativeRadius(dim, base, n);
                     rhoMin = std::min(rhoMin, rho), rhoSum += rho;
                     std::vector<double> acc(gs.size(), 0.0);
                     for (int t = 0; t < shifts; ++t) {
                         float shift[3];
                         for (int c = 0; c < dim; ++c)
-                            shift[c] = stipple::unitFloat(stipple::hashAt(0x5b1f7 + j, uint64_t(t) * 3 + c));
+                            shift[c] =
+                                stipple::detail::unitFloat(stipple::detail::hashAt(0x5b1f7 + j, uint64_t(t) * 3 + c));
                         for (size_t i = 0; i < size_t(n) * dim; ++i) {
                             float v = base[i] + shift[i % dim];
                             shifted[i] = v - float(v >= 1.0f);

@@ -22,13 +22,13 @@ void BM_Generate(benchmark::State& state) {
     double rhoSum = 0.0;
     int64_t measured = 0;
     for (auto _ : state) {
-        std::vector<float> pts = generator == kPoisson ? stipple::pointsets::generatePoisson(dim, n, seed)
-                                                       : stipple::pointsets::generatePoissonSeed(dim, n, seed);
+        std::vector<float> pts = generator == kPoisson ? stipple::detail::pointsets::generatePoisson(dim, n, seed)
+                                                       : stipple::detail::pointsets::generatePoissonSeed(dim, n, seed);
         benchmark::DoNotOptimize(pts.data());
         ++seed;
         if (measured < 8) { // rho of the first few sets, off the clock
             state.PauseTiming();
-            rhoSum += stipple::pointsets::relativeRadius(dim, pts.data(), n);
+            rhoSum += stipple::detail::pointsets::relativeRadius(dim, pts.data(), n);
             ++measured;
             state.ResumeTiming();
         }

@@ -40,7 +40,7 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using namespace stipple::pointsets;
+using namespace stipple::detail::pointsets;
 
 namespace {
 
@@ -215,7 +215,7 @@ int main(int argc, char** argv) {
                     }
                     if (code == STIPPLE_PATTERN_POISSON) { // warm the whole family first, timed apart
                         double c0 = threadSeconds();
-                        auto family = stipple::PoissonCache::global().acquire(uint32_t(dim), n);
+                        auto family = stipple::detail::PoissonCache::global().acquire(uint32_t(dim), n);
                         for (uint32_t j = 0; j < family->setCount(); ++j) family->set(j);
                         warmup << dim << "," << n << "," << family->setCount() << "," << threadSeconds() - c0 << "\n";
                     }

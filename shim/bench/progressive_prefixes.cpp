@@ -66,8 +66,8 @@ int main() {
                 stipple_sampler fresh = streams(pattern, m, 2027);
                 double rhoPrefix = 0, rhoFresh = 0;
                 for (uint32_t p = 0; p < 64; ++p) {
-                    rhoPrefix += stipple::pointsets::relativeRadius(2, prefix(full, p, m).data(), m) / 64;
-                    rhoFresh += stipple::pointsets::relativeRadius(2, prefix(fresh, p, m).data(), m) / 64;
+                    rhoPrefix += stipple::detail::pointsets::relativeRadius(2, prefix(full, p, m).data(), m) / 64;
+                    rhoFresh += stipple::detail::pointsets::relativeRadius(2, prefix(fresh, p, m).data(), m) / 64;
                 }
                 double diskPrefix = 0, diskFresh = 0, gaussPrefix = 0, gaussFresh = 0;
                 const uint32_t pixels = 4096;

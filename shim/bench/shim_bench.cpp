@@ -30,12 +30,12 @@ namespace {
 // Generates the cached sets a pattern serves from (poisson sets, pmj02 sequences) before timing.
 void warmPoisson(uint32_t pattern, uint32_t arity, uint32_t n) {
     if (pattern == STIPPLE_PATTERN_PMJ02) {
-        auto family = stipple::Pmj02Family::acquire(static_cast<uint32_t>(std::bit_width(n - 1)));
+        auto family = stipple::detail::Pmj02Family::acquire(static_cast<uint32_t>(std::bit_width(n - 1)));
         for (uint32_t j = 0; j < family->setCount(); ++j) family->sequence(j);
         return;
     }
     if (pattern != STIPPLE_PATTERN_POISSON) return;
-    auto family = stipple::PoissonCache::global().acquire(arity, n);
+    auto family = stipple::detail::PoissonCache::global().acquire(arity, n);
     for (uint32_t j = 0; j < family->setCount(); ++j) family->set(j);
 }
 
@@ -166,9 +166,9 @@ void BM_StreamFill(benchmark::State& state) {
 void BM_PoissonWarmup(benchmark::State& state) {
     const auto arity = static_cast<uint32_t>(state.range(0));
     const auto n = static_cast<uint32_t>(state.range(1));
-    const uint32_t sets = stipple::PoissonCache::setCountFor(arity, n);
+    const uint32_t sets = stipple::detail::PoissonCache::setCountFor(arity, n);
     for (auto _ : state) {
-        stipple::PoissonFamily family(arity, n, sets); // fresh, outside the cache
+        stipple::detail::PoissonFamily family(arity, n, sets); // fresh, outside the cache
         for (uint32_t j = 0; j < sets; ++j) benchmark::DoNotOptimize(family.set(j));
     }
     state.counters["sets"] = sets;
@@ -208,7 +208,8 @@ int main(int argc, char** argv) {
         const std::string wanted = argv[i] + 6;
         bool known = false;
         for (uint32_t isa = 0; isa < 3; ++isa)
-            if (wanted == names[isa]) stipple::forceBatchIsa(static_cast<stipple::BatchIsa>(isa)), known = true;
+            if (wanted == names[isa])
+                stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa)), known = true;
         if (!known) {
             std::fprintf(stderr, "shim_shim_bench: --isa=%s; expected baseline, avx2 or avx512\n", wanted.c_str());
             return 2;
@@ -217,7 +218,7 @@ int main(int argc, char** argv) {
         --argc;
         --i;
     }
-    benchmark::AddCustomContext("batch_isa", names[static_cast<uint32_t>(stipple::batchIsa())]);
+    benchmark::AddCustomContext("batch_isa", names[static_cast<uint32_t>(stipple::detail::batchIsa())]);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

@@ -3,6 +3,7 @@
 // Each entry point checks its arguments (messages name the argument, its value and what was expected) and runs
 // its body through callGuarded, so no exception reaches the host and nothing aborts or prints.
 #include "error.h"
+#include "pattern_registry.h"
 #include "sampler.h"
 
 #include <stipple/stipple.h>
@@ -10,21 +11,18 @@
 #include <cstring>
 #include <string>
 
-using stipple::callGuarded;
-using stipple::Error;
-using stipple::requireNonNull;
+using stipple::detail::callGuarded;
+using stipple::detail::Error;
+using stipple::detail::requireNonNull;
 
 namespace {
 
-constexpr const char* kPatternNames[STIPPLE_PATTERN_COUNT] = {"independent",  "stratified", "poisson",
-                                                              "poisson-seed", "sobol",      "pmj02"};
-
-const stipple::Sampler& checkedSampler(stipple_sampler sampler) {
+const stipple::detail::Sampler& checkedSampler(stipple_sampler sampler) {
     requireNonNull(sampler, "sampler");
-    return *stipple::fromHandle(sampler);
+    return *stipple::detail::fromHandle(sampler);
 }
 
-void checkDimension(const stipple::Sampler& sampler, uint32_t dimension) {
+void checkDimension(const stipple::detail::Sampler& sampler, uint32_t dimension) {
     if (sampler.dimensionCount() == 0)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
                     "dimension is " + std::to_string(dimension) +
@@ -36,9 +34,11 @@ void checkDimension(const stipple::Sampler& sampler, uint32_t dimension) {
                         " (the declared layout; past it use stipple_sampler_sample_independent)");
 }
 
-void checkArity(uint32_t arity) {
-    if (arity < 1 || arity > 3)
-        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "arity is " + std::to_string(arity) + "; expected 1, 2 or 3");
+void checkArity(const stipple::detail::Sampler& sampler, uint32_t arity) {
+    const uint32_t maxArity = sampler.patternOps().limits.maxArity;
+    if (arity < 1 || arity > maxArity)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    "arity is " + std::to_string(arity) + "; expected " + stipple::detail::arityList(maxArity));
 }
 
 void checkCapacity(size_t outCount, size_t needed) {
@@ -64,7 +64,7 @@ void prepareOutput(Info* info, const char* argument) {
 
 extern "C" {
 
-STIPPLE_API const char* stipple_last_error_message(void) { return stipple::lastErrorMessage(); }
+STIPPLE_API const char* stipple_last_error_message(void) { return stipple::detail::lastErrorMessage(); }
 
 STIPPLE_API stipple_status stipple_get_version(uint32_t* major, uint32_t* minor, uint32_t* patch) {
     return callGuarded(__func__, [&] {
@@ -81,26 +81,22 @@ STIPPLE_API stipple_status stipple_pattern_from_name(const char* name, uint32_t*
     return callGuarded(__func__, [&] {
         requireNonNull(name, "name");
         requireNonNull(out_pattern, "out_pattern");
-        for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p)
-            if (std::strcmp(name, kPatternNames[p]) == 0) {
-                *out_pattern = p;
-                return;
-            }
+        if (stipple::detail::findPatternId(name, out_pattern)) return;
         const size_t length = strnlen(name, 64);
-        throw Error(
-            STIPPLE_ERROR_INVALID_ARGUMENT,
-            "name is \"" + std::string(name, length) + (length == 64 ? "...\"" : "\"") +
-                "; expected \"independent\", \"stratified\", \"poisson\", \"poisson-seed\", \"sobol\" or \"pmj02\"");
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "name is \"" + std::string(name, length) +
+                                                        (length == 64 ? "...\"" : "\"") + "; expected " +
+                                                        stipple::detail::patternNameList());
     });
 }
 
 STIPPLE_API stipple_status stipple_pattern_name(uint32_t pattern, const char** out_name) {
     return callGuarded(__func__, [&] {
         requireNonNull(out_name, "out_name");
-        if (pattern >= STIPPLE_PATTERN_COUNT)
+        const stipple::detail::PatternOps* ops = stipple::detail::findPattern(pattern);
+        if (!ops)
             throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is " + std::to_string(pattern) + "; expected 0.." +
-                                                            std::to_string(STIPPLE_PATTERN_COUNT - 1));
-        *out_name = kPatternNames[pattern];
+                                                            std::to_string(stipple::detail::patternCount() - 1));
+        *out_name = ops->name;
     });
 }
 
@@ -109,17 +105,17 @@ STIPPLE_API stipple_status stipple_sampler_create(const stipple_sampler_desc* de
         requireNonNull(out_sampler, "out_sampler");
         *out_sampler = nullptr;
         requireNonNull(desc, "desc");
-        *out_sampler = stipple::toHandle(stipple::createSampler(*desc));
+        *out_sampler = stipple::detail::toHandle(stipple::detail::createSampler(*desc));
     });
 }
 
 STIPPLE_API stipple_status stipple_sampler_release(stipple_sampler sampler) {
-    return callGuarded(__func__, [&] { delete stipple::fromHandle(sampler); });
+    return callGuarded(__func__, [&] { delete stipple::detail::fromHandle(sampler); });
 }
 
 STIPPLE_API stipple_status stipple_sampler_get_info(stipple_sampler sampler, stipple_sampler_info* out_info) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
         prepareOutput(out_info, "out_info");
         out_info->pattern = s.pattern();
         out_info->samples_per_pixel = s.samplesPerPixel();
@@ -131,23 +127,22 @@ STIPPLE_API stipple_status stipple_sampler_get_info(stipple_sampler sampler, sti
 STIPPLE_API stipple_status stipple_sampler_get_dimension_info(stipple_sampler sampler, uint32_t dimension,
                                                               stipple_dimension_info* out_info) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
         checkDimension(s, dimension);
         prepareOutput(out_info, "out_info");
-        const stipple::Dimension& dim = s.dimension(dimension);
+        const stipple::detail::Dimension& dim = s.dimension(dimension);
         out_info->arity = dim.arity;
         out_info->count = dim.count;
         out_info->floats_per_pixel = dim.floatsPerPixel();
         out_info->name = dim.name.c_str();
-        if (s.pattern() == STIPPLE_PATTERN_STRATIFIED)
-            for (uint32_t c = 0; c < dim.arity; ++c) out_info->strata[c] = dim.grid.axis[c];
+        if (s.patternOps().strata) s.patternOps().strata(dim, out_info->strata);
     });
 }
 
 STIPPLE_API stipple_status stipple_sampler_find_dimension(stipple_sampler sampler, const char* name,
                                                           uint32_t* out_dimension) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
         requireNonNull(name, "name");
         requireNonNull(out_dimension, "out_dimension");
         for (uint32_t d = 0; d < s.dimensionCount(); ++d)
@@ -166,7 +161,7 @@ STIPPLE_API stipple_status stipple_sampler_find_dimension(stipple_sampler sample
 STIPPLE_API stipple_status stipple_sampler_fill_pixel(stipple_sampler sampler, uint32_t pixel_x, uint32_t pixel_y,
                                                       uint32_t dimension, float* out, size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
         checkDimension(s, dimension);
         requireNonNull(out, "out");
         checkCapacity(out_count, s.dimension(dimension).floatsPerPixel());
@@ -178,7 +173,7 @@ STIPPLE_API stipple_status stipple_sampler_sample(stipple_sampler sampler, uint3
                                                   uint32_t sample_index, uint32_t dimension, float* out,
                                                   size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
         checkDimension(s, dimension);
         requireNonNull(out, "out");
         checkCapacity(out_count, s.dimension(dimension).floatsPerSample());
@@ -190,7 +185,7 @@ STIPPLE_API stipple_status stipple_sampler_sample_independent(stipple_sampler sa
                                                               uint32_t pixel_y, uint32_t sample_index, uint32_t stream,
                                                               float* out, size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
         requireNonNull(out, "out");
         if (out_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "out_count is 0; expected at least 1");
         s.sampleIndependent(pixel_x, pixel_y, sample_index, stream, out, out_count);
@@ -201,8 +196,8 @@ STIPPLE_API stipple_status stipple_sampler_stream(stipple_sampler sampler, uint3
                                                   uint32_t sample_index, uint32_t dimension, uint32_t arity, float* out,
                                                   size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
-        checkArity(arity);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
+        checkArity(s, arity);
         requireNonNull(out, "out");
         checkCapacity(out_count, arity);
         s.stream(pixel_x, pixel_y, sample_index, dimension, arity, out);
@@ -213,8 +208,8 @@ STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, 
                                                        uint32_t first_sample, uint32_t sample_count, uint32_t dimension,
                                                        uint32_t arity, float* out, size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
-        checkArity(arity);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
+        checkArity(s, arity);
         if (sample_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
         if (uint64_t(first_sample) + sample_count > (uint64_t(1) << 32))
             throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is " +

@@ -15,7 +15,7 @@
 #endif
 #include <immintrin.h>
 
-namespace stipple {
+namespace stipple::detail {
 
 // Stores the first `floats` (<= 16) lanes of v: whole, or masked for a block's tail.
 [[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline void storeFirst(float* out, __m512 v, uint32_t floats) {
@@ -25,4 +25,4 @@ namespace stipple {
         _mm512_mask_storeu_ps(out, __mmask16((1u << floats) - 1u), v);
 }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -3,7 +3,7 @@
 
 #include <atomic>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -39,4 +39,4 @@ void forceBatchIsa(BatchIsa isa) {
                     std::memory_order_relaxed);
 }
 
-} // namespace stipple
+} // namespace stipple::detail

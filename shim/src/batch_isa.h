@@ -8,18 +8,20 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 enum class BatchIsa : uint32_t { Baseline = 0, Avx2 = 1, Avx512 = 2 };
+inline constexpr uint32_t kBatchIsaCount = 3;
 
-// The variant the batch kernels use: the widest the CPU supports unless lowered by forceBatchIsa.
+// The variant the batch kernels use: the widest the CPU supports unless lowered by forceBatchIsa. Detected once;
+// a sampler takes its pattern's kernels for it when it is created (pattern_registry.h).
 BatchIsa batchIsa();
 // The widest variant this CPU (and this build) supports.
 BatchIsa widestBatchIsa();
-// For tests: use `isa` (clamped to widestBatchIsa()) from now on, in every thread.
+// For tests and benchmarks: samplers created from now on use `isa` (clamped to widestBatchIsa()).
 void forceBatchIsa(BatchIsa isa);
 
-} // namespace stipple
+} // namespace stipple::detail
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define STIPPLE_BATCH_ISA_CLONES 1

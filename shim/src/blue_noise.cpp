@@ -5,7 +5,7 @@
 
 #include <utility>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -114,4 +114,4 @@ void applyToroidalShift(const float* shift, uint32_t arity, size_t count, float*
         }
 }
 
-} // namespace stipple
+} // namespace stipple::detail

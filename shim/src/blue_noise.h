@@ -28,7 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 constexpr uint32_t kBlueNoiseTileLog2 = 6; // tiles of 64 x 64 pixels
 
@@ -61,4 +61,4 @@ void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t
 // x + shift wrapped into [0, 1) for count points of `arity` floats.
 void applyToroidalShift(const float* shift, uint32_t arity, size_t count, float* values);
 
-} // namespace stipple
+} // namespace stipple::detail

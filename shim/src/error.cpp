@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 // A fixed buffer: recording an out-of-memory error must not itself allocate.
@@ -27,4 +27,4 @@ void setInternalError(const char* function, const char* message) noexcept {
 
 const char* lastErrorMessage() noexcept { return tLastError; }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -1,6 +1,6 @@
 // error.h — how failures travel inside the library and how they reach the host.
 //
-// Inside: code throws stipple::Error (a status + a message naming the argument, its value and what was
+// Inside: code throws stipple::detail::Error (a status + a message naming the argument, its value and what was
 // expected). At the C boundary every entry point runs its body through callGuarded(), which turns any exception
 // into a status and the calling thread's message. No exception ever crosses into the host.
 #pragma once
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace stipple {
+namespace stipple::detail {
 
 class Error : public std::runtime_error {
 public:
@@ -55,4 +55,4 @@ inline void requireNonNull(const void* pointer, const char* argument) {
         throw Error(STIPPLE_ERROR_NULL_ARGUMENT, std::string(argument) + " is NULL; expected a valid pointer");
 }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 class FastDivider {
 public:
@@ -30,4 +30,4 @@ private:
     uint32_t divisor_ = 1;
 };
 
-} // namespace stipple
+} // namespace stipple::detail

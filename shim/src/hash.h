@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 // SplitMix64's finaliser (Stafford's "Mix13"): a bijection on 64 bits with full avalanche.
 constexpr uint64_t mix64(uint64_t z) {
@@ -52,4 +52,4 @@ constexpr uint64_t setKey(uint64_t seed, HashDomain domain, uint32_t pixelX, uin
 // A float in [0, 1) from the top 24 bits: every value is an exact multiple of 2^-24, so 1.0 cannot occur.
 constexpr float unitFloat(uint64_t bits) { return static_cast<float>(bits >> 40) * 0x1p-24f; }
 
-} // namespace stipple
+} // namespace stipple::detail

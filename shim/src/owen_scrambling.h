@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 constexpr uint32_t reverseBits32(uint32_t v) {
     v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
@@ -38,4 +38,4 @@ constexpr uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
 // A 32-bit fixed-point fraction as a float in [0, 1): the top 24 bits, so 1.0 cannot occur.
 constexpr float fixedToUnitFloat(uint32_t x) { return static_cast<float>(x >> 8) * 0x1p-24f; }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -4,9 +4,10 @@
 #include "batch_isa.h"
 #include "blue_noise.h"
 #include "hash.h"
+#include "pattern_registry.h"
 #include "patterns.h"
 
-namespace stipple {
+namespace stipple::detail {
 
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
     const uint64_t first = uint64_t(p) * dim.arity;
@@ -40,21 +41,47 @@ void hashedFloatsBaseline(uint64_t key, uint64_t begin, uint64_t n, float* out) 
 
 } // namespace
 
+template <BatchIsa Isa>
 void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue) {
     if (!blue) {
         const uint64_t begin = uint64_t(first) * dim.arity;
         const uint64_t n = uint64_t(count) * dim.arity;
 #if defined(STIPPLE_BATCH_ISA_CLONES)
-        switch (batchIsa()) {
-        case BatchIsa::Avx512: return hashedFloatsAvx512(key, begin, n, out);
-        case BatchIsa::Avx2: return hashedFloatsAvx2(key, begin, n, out);
-        case BatchIsa::Baseline: break;
-        }
+        if constexpr (Isa == BatchIsa::Avx512) return hashedFloatsAvx512(key, begin, n, out);
+        if constexpr (Isa == BatchIsa::Avx2) return hashedFloatsAvx2(key, begin, n, out);
 #endif
         return hashedFloatsBaseline(key, begin, n, out);
     }
     for (uint32_t i = 0; i < count; ++i) pointIndependent(key, dim, first + i, out + size_t(i) * dim.arity, blue);
 }
 
-} // namespace stipple
+namespace {
+template <BatchIsa Isa>
+void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    fillIndependent<Isa>(set.key, dim, first, count, out);
+}
+} // namespace
+
+extern const PatternOps kIndependentPattern;
+constinit const PatternOps kIndependentPattern{
+    .name = "independent",
+    .domain = HashDomain::Independent,
+    .blockKeying = BlockKeying::Rekeyed,
+    .blueNoise = BlueNoiseMode::CrossPixelStrata,
+    .latticeUse = LatticeUse::Square,
+    .limits = {},
+    .prepare = nullptr,
+    .prepareStreamsOnFirstUse = false,
+    .strata = nullptr,
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointIndependent(set.key, dim, p, out); },
+    .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
+    .fillStrata =
+        [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+           const CrossPixelStrata& strata) {
+            fillIndependent<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
+        },
+};
+
+} // namespace stipple::detail

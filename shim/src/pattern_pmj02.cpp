@@ -12,11 +12,12 @@
 // Sample indices past the set (block b = i / N > 0) take the first M points of a set randomised from the block's
 // key hashCombine(set key, b) (the sampler computes it; block 0 is hashCombine(set key, 0)).
 #include "owen_scrambling.h"
+#include "pattern_registry.h"
 #include "patterns.h"
 
 #include <bit>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -68,4 +69,27 @@ void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
     pmj02Point(Pmj02Set(key, family), family, dim.arity, p, out);
 }
 
-} // namespace stipple
+namespace {
+void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    fillPmj02(set.key, dim, first, count, out);
+}
+} // namespace
+
+// Every block keyed hashCombine(set key, b), block 0 included; no batch kernels per ISA (table lookups).
+extern const PatternOps kPmj02Pattern;
+constinit const PatternOps kPmj02Pattern{
+    .name = "pmj02",
+    .domain = HashDomain::Pmj02,
+    .blockKeying = BlockKeying::EveryBlock,
+    .blueNoise = BlueNoiseMode::TileShift,
+    .latticeUse = LatticeUse::Shift,
+    .limits = {.maxArity = 3, .maxSetSize = 1u << Pmj02Family::kMaxLog2Length},
+    .prepare = [](Dimension& dim) { dim.pmj02 = Pmj02Family::acquire(dim.log2Length); },
+    .prepareStreamsOnFirstUse = false, // a family generates its sequences on first use
+    .strata = nullptr,
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p, float* out) { pointPmj02(set.key, dim, p, out); },
+    .fill = {fillSet, fillSet, fillSet},
+    .fillStrata = nullptr,
+};
+
+} // namespace stipple::detail

@@ -12,6 +12,7 @@
 #include "batch_isa.h"
 #include "error.h"
 #include "hash.h"
+#include "pattern_registry.h"
 #include "patterns.h"
 #include "permutation.h"
 #include "pointsets/pointsets.h"
@@ -22,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -172,34 +173,32 @@ template <uint32_t Arity>
 }
 #endif
 
-template <uint32_t Arity>
+template <BatchIsa Isa, uint32_t Arity>
 void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint32_t first, uint32_t count, float* out) {
 #if defined(STIPPLE_BATCH_ISA_CLONES)
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: {
+    if constexpr (Isa == BatchIsa::Avx512) {
         // Power-of-two sets: hand-written (poisson_avx512.cpp).
         if (poissonLayeredAvx512(map, Arity, stored, points, first, count, out)) return;
         return serveLayeredAvx512<Arity>(map, stored, points, first, count, out);
     }
-    case BatchIsa::Avx2: return serveLayeredAvx2<Arity>(map, stored, points, first, count, out);
-    case BatchIsa::Baseline: break;
-    }
+    if constexpr (Isa == BatchIsa::Avx2) return serveLayeredAvx2<Arity>(map, stored, points, first, count, out);
 #endif
     serveLayeredBaseline<Arity>(map, stored, points, first, count, out);
 }
 
 // The map built for a known arity: only its axes are computed (the others keep their unused defaults).
-template <uint32_t Arity>
+template <BatchIsa Isa, uint32_t Arity>
 void fillPoissonOf(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     const TorusMap map(key, Arity, true);
-    serveBatch<Arity>(map, cachedSet(key, dim), dim.setSize, first, count, out);
+    serveBatch<Isa, Arity>(map, cachedSet(key, dim), dim.setSize, first, count, out);
 }
 
+template <BatchIsa Isa>
 void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     switch (dim.arity) {
-    case 1: return fillPoissonOf<1>(key, dim, first, count, out);
-    case 2: return fillPoissonOf<2>(key, dim, first, count, out);
-    default: return fillPoissonOf<3>(key, dim, first, count, out);
+    case 1: return fillPoissonOf<Isa, 1>(key, dim, first, count, out);
+    case 2: return fillPoissonOf<Isa, 2>(key, dim, first, count, out);
+    default: return fillPoissonOf<Isa, 3>(key, dim, first, count, out);
     }
 }
 
@@ -221,4 +220,50 @@ void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out
     fillPoissonSeed(key, dim, p, 1, out);
 }
 
-} // namespace stipple
+namespace {
+template <BatchIsa Isa>
+void fillPoissonSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    fillPoisson<Isa>(set.key, dim, first, count, out);
+}
+void fillPoissonSeedSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    fillPoissonSeed(set.key, dim, first, count, out);
+}
+} // namespace
+
+// The cache's families count against its budget: a stream acquires its family on first use.
+extern const PatternOps kPoissonPattern;
+constinit const PatternOps kPoissonPattern{
+    .name = "poisson",
+    .domain = HashDomain::Poisson,
+    .blockKeying = BlockKeying::Rekeyed,
+    .blueNoise = BlueNoiseMode::TileShift,
+    .latticeUse = LatticeUse::Shift,
+    .limits = {},
+    .prepare = [](Dimension& dim) { dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize); },
+    .prepareStreamsOnFirstUse = true,
+    .strata = nullptr,
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointPoisson(set.key, dim, p, out); },
+    .fill = {fillPoissonSet<BatchIsa::Baseline>, fillPoissonSet<BatchIsa::Avx2>, fillPoissonSet<BatchIsa::Avx512>},
+    .fillStrata = nullptr,
+};
+
+// Generated afresh on every call: nothing to prepare, nothing per ISA.
+extern const PatternOps kPoissonSeedPattern;
+constinit const PatternOps kPoissonSeedPattern{
+    .name = "poisson-seed",
+    .domain = HashDomain::PoissonSeed,
+    .blockKeying = BlockKeying::Rekeyed,
+    .blueNoise = BlueNoiseMode::TileShift,
+    .latticeUse = LatticeUse::Shift,
+    .limits = {},
+    .prepare = nullptr,
+    .prepareStreamsOnFirstUse = false,
+    .strata = nullptr,
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointPoissonSeed(set.key, dim, p, out); },
+    .fill = {fillPoissonSeedSet, fillPoissonSeedSet, fillPoissonSeedSet},
+    .fillStrata = nullptr,
+};
+
+} // namespace stipple::detail

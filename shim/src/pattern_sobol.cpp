@@ -15,10 +15,11 @@
 // The index is 32-bit: past 2^32 points the sequence repeats.
 #include "batch_isa.h"
 #include "owen_scrambling.h"
+#include "pattern_registry.h"
 #include "patterns.h"
 #include "sobol_matrices.h"
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -93,14 +94,11 @@ template <uint32_t Arity>
 }
 #endif
 
-template <uint32_t Arity>
+template <BatchIsa Isa, uint32_t Arity>
 void sobolBatch(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
 #if defined(STIPPLE_BATCH_ISA_CLONES)
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: return sobolBatchAvx512<Arity>(set, dim, first, count, out);
-    case BatchIsa::Avx2: return sobolBatchAvx2<Arity>(set, dim, first, count, out);
-    case BatchIsa::Baseline: break;
-    }
+    if constexpr (Isa == BatchIsa::Avx512) return sobolBatchAvx512<Arity>(set, dim, first, count, out);
+    if constexpr (Isa == BatchIsa::Avx2) return sobolBatchAvx2<Arity>(set, dim, first, count, out);
 #endif
     // Without wide vectors the per-point code is the faster one (SSE2 has no 32-bit lane multiply).
     for (uint32_t i = 0; i < count; ++i) sobolPoint(set, dim, first + i, out + size_t(i) * Arity);
@@ -108,14 +106,41 @@ void sobolBatch(const SobolSet& set, const Dimension& dim, uint32_t first, uint3
 
 } // namespace
 
+template <BatchIsa Isa>
 void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     switch (dim.arity) {
-    case 1: return sobolBatch<1>(set, dim, first, count, out);
-    case 2: return sobolBatch<2>(set, dim, first, count, out);
-    default: return sobolBatch<3>(set, dim, first, count, out);
+    case 1: return sobolBatch<Isa, 1>(set, dim, first, count, out);
+    case 2: return sobolBatch<Isa, 2>(set, dim, first, count, out);
+    default: return sobolBatch<Isa, 3>(set, dim, first, count, out);
     }
 }
 
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out) { sobolPoint(set, dim, p, out); }
 
-} // namespace stipple
+namespace {
+template <BatchIsa Isa>
+void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    fillSobol<Isa>(SobolSet::perPixel(set.key).atBlock(set.block), dim, first, count, out);
+}
+} // namespace
+
+// Blocks continue the sequence (SobolSet::atBlock); with the blue-noise flag one sequence per tile, one shift per
+// pixel for all its blocks.
+extern const PatternOps kSobolPattern;
+constinit const PatternOps kSobolPattern{
+    .name = "sobol",
+    .domain = HashDomain::Sobol,
+    .blockKeying = BlockKeying::Sequence,
+    .blueNoise = BlueNoiseMode::TileShift,
+    .latticeUse = LatticeUse::Shift,
+    .limits = {},
+    .prepare = nullptr,
+    .prepareStreamsOnFirstUse = false,
+    .strata = nullptr,
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointSobol(SobolSet::perPixel(set.key).atBlock(set.block), dim, p, out); },
+    .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
+    .fillStrata = nullptr,
+};
+
+} // namespace stipple::detail

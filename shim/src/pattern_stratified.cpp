@@ -29,6 +29,7 @@
 #include "batch_isa.h"
 #include "blue_noise.h"
 #include "hash.h"
+#include "pattern_registry.h"
 #include "patterns.h"
 #include "permutation.h"
 #include "progressive_strata.h"
@@ -36,7 +37,7 @@
 
 #include <bit>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -244,7 +245,7 @@ void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, ui
 }
 #endif
 
-template <uint32_t Arity>
+template <BatchIsa Isa, uint32_t Arity>
 void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue) {
     if (blue) {
@@ -253,11 +254,8 @@ void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t 
         return;
     }
 #if defined(STIPPLE_BATCH_ISA_CLONES)
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: return progressiveBatchAvx512<Arity>(set, grid, first, count, out);
-    case BatchIsa::Avx2: return progressiveBatchAvx2<Arity>(set, grid, first, count, out);
-    case BatchIsa::Baseline: break;
-    }
+    if constexpr (Isa == BatchIsa::Avx512) return progressiveBatchAvx512<Arity>(set, grid, first, count, out);
+    if constexpr (Isa == BatchIsa::Avx2) return progressiveBatchAvx2<Arity>(set, grid, first, count, out);
 #endif
     // Without wide vectors the per-point code (byte and cell tables) is the faster one: 4.4 against 6.8 ns per
     // value for 1D N = 4096 (SSE2 has no 32-bit lane multiply).
@@ -296,15 +294,16 @@ inline void permutedPoint(const StratifiedSet& set, const StrataGrid& grid, uint
 
 } // namespace
 
+template <BatchIsa Isa>
 void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                     const CrossPixelStrata* blue) {
     const StratifiedSet set(key, dim.grid);
     const StrataGrid& grid = dim.grid;
     if (grid.progressive) {
         switch (dim.arity) {
-        case 1: return fillProgressive<1>(set, grid, first, count, out, blue);
-        case 2: return fillProgressive<2>(set, grid, first, count, out, blue);
-        default: return fillProgressive<3>(set, grid, first, count, out, blue);
+        case 1: return fillProgressive<Isa, 1>(set, grid, first, count, out, blue);
+        case 2: return fillProgressive<Isa, 2>(set, grid, first, count, out, blue);
+        default: return fillProgressive<Isa, 3>(set, grid, first, count, out, blue);
         }
     } else {
         for (uint32_t i = 0; i < count; ++i) permutedPoint(set, grid, first + i, out + size_t(i) * dim.arity, blue);
@@ -328,4 +327,35 @@ void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out,
     }
 }
 
-} // namespace stipple
+namespace {
+template <BatchIsa Isa>
+void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    fillStratified<Isa>(set.key, dim, first, count, out);
+}
+} // namespace
+
+extern const PatternOps kStratifiedPattern;
+constinit const PatternOps kStratifiedPattern{
+    .name = "stratified",
+    .domain = HashDomain::Stratified,
+    .blockKeying = BlockKeying::Rekeyed,
+    .blueNoise = BlueNoiseMode::CrossPixelStrata,
+    .latticeUse = LatticeUse::Strata,
+    .limits = {},
+    .prepare = [](Dimension& dim) { dim.grid = StrataGrid::choose(dim.arity, dim.setSize); },
+    .prepareStreamsOnFirstUse = false,
+    .strata =
+        [](const Dimension& dim, uint32_t* axes) {
+            for (uint32_t c = 0; c < dim.arity; ++c) axes[c] = dim.grid.axis[c];
+        },
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointStratified(set.key, dim, p, out); },
+    .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
+    .fillStrata =
+        [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+           const CrossPixelStrata& strata) {
+            fillStratified<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
+        },
+};
+
+} // namespace stipple::detail

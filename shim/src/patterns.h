@@ -3,24 +3,28 @@
 // Each pattern serves the set of one (pixel, dimension, block): M points of `arity` floats (M = k*N for a
 // declared dimension, N for a streamed one). fill* writes points [first, first + count) of the set (point p at
 // out[(p - first) * arity]); point* writes point p alone and is bitwise equal to fill*'s point p. The key is
-// Sampler::setKey (seed, pattern domain, pixel, dimension, arity for streams, block).
-// A new pattern adds its pair here, a case to Sampler's dispatch and a row to the tables in abi.cpp.
+// the sampler's set key (seed, pattern domain, pixel, dimension, arity for streams) after the pattern's block
+// keying (pattern_registry.h). A fill with batch kernels is a template on the BatchIsa it runs with; each pattern's
+// source file instantiates it for its PatternOps, which is how the sampler reaches these functions.
 #pragma once
 
+#include "batch_isa.h"
 #include "dimension.h"
 #include "hash.h"
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 struct CrossPixelStrata; // blue_noise.h: with the blue-noise flag, stratified and independent take one
 
+template <BatchIsa Isa>
 void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue = nullptr);
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out,
                       const CrossPixelStrata* blue = nullptr);
 
+template <BatchIsa Isa>
 void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                     const CrossPixelStrata* blue = nullptr);
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out,
@@ -30,6 +34,7 @@ void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out,
 constexpr uint32_t poissonSetIndex(uint64_t key, uint32_t setCount) {
     return static_cast<uint32_t>(((key >> 32) * setCount) >> 32);
 }
+template <BatchIsa Isa>
 void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
@@ -52,6 +57,7 @@ struct SobolSet {
         return s;
     }
 };
+template <BatchIsa Isa>
 void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out);
 
@@ -59,4 +65,4 @@ void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* ou
 void fillPmj02(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 constexpr uint32_t permuteIndex(uint32_t i, uint32_t length, uint32_t p) {
     uint32_t w = length - 1;
@@ -39,9 +39,9 @@ constexpr uint32_t permuteIndex(uint32_t i, uint32_t length, uint32_t p) {
     return static_cast<uint32_t>((uint64_t(i) + p) % length);
 }
 
-} // namespace stipple
+} // namespace stipple::detail
 
-namespace stipple {
+namespace stipple::detail {
 
 // A cheaper hashed permutation of [0, length) for the per-value paths: a bijection on the next power of two
 // (xor-shift and odd-multiply rounds, each invertible mod 2^k), cycle-walked into [0, length); no division.
@@ -66,4 +66,4 @@ constexpr uint32_t permuteIndexFast(uint32_t i, uint32_t length, uint32_t seed) 
     return i;
 }
 
-} // namespace stipple
+} // namespace stipple::detail

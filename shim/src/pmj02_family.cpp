@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <map>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 constexpr uint64_t kPmj02FamilyDomain = 0x9a102fa0c0ffee07ull;
@@ -40,4 +40,4 @@ std::shared_ptr<const Pmj02Family> Pmj02Family::acquire(uint32_t log2Length) {
     return family;
 }
 
-} // namespace stipple
+} // namespace stipple::detail

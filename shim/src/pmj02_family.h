@@ -13,7 +13,7 @@
 #include <mutex>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 class Pmj02Family {
 public:
@@ -41,4 +41,4 @@ private:
     std::unique_ptr<Slot[]> slots_;
 };
 
-} // namespace stipple
+} // namespace stipple::detail

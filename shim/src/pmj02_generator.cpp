@@ -17,7 +17,7 @@
 #include <bit>
 #include <string>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -183,4 +183,4 @@ std::vector<FixedPoint2> generatePmj02(uint32_t log2Length, uint64_t seed) {
     return points;
 }
 
-} // namespace stipple
+} // namespace stipple::detail

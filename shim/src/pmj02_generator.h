@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 struct FixedPoint2 {
     uint32_t x, y;
@@ -20,4 +20,4 @@ std::vector<FixedPoint2> generatePmj02(uint32_t log2Length, uint64_t seed);
 // verification and by the tests).
 bool isElementaryNet(const FixedPoint2* points, uint32_t k);
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -12,7 +12,7 @@
 
 #include <bit>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -146,5 +146,5 @@ bool poissonLayeredAvx512(const PoissonKernelArgs& args, uint32_t arity, const f
     return true;
 }
 
-} // namespace stipple
+} // namespace stipple::detail
 #endif

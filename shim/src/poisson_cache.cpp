@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <string>
 
-namespace stipple {
+namespace stipple::detail {
 
 PoissonFamily::PoissonFamily(uint32_t arity, uint32_t points, uint32_t setCount)
     : arity_(arity), points_(points), setCount_(setCount), slots_(new Slot[setCount]) {}
@@ -79,4 +79,4 @@ size_t PoissonCache::bytesHeld() const {
     return bytes_;
 }
 
-} // namespace stipple
+} // namespace stipple::detail

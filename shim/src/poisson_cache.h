@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 class PoissonFamily {
 public:
@@ -76,4 +76,4 @@ private:
     uint64_t clock_ = 0;
 };
 
-} // namespace stipple
+} // namespace stipple::detail

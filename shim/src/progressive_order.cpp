@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -88,4 +88,4 @@ void orderProgressively(std::vector<float>& points, uint32_t arity) {
     points.swap(reordered);
 }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -12,11 +12,11 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 inline constexpr uint32_t kFarthestPointLimit = 1024;
 
 // Reorders points (M * arity floats in [0,1)) in place.
 void orderProgressively(std::vector<float>& points, uint32_t arity);
 
-} // namespace stipple
+} // namespace stipple::detail

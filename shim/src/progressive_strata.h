@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 constexpr uint32_t reverseBits(uint32_t v, uint32_t bits) {
     v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
@@ -62,4 +62,4 @@ constexpr void progressiveCell(uint32_t q, uint32_t arity, const uint32_t axisBi
     }
 }
 
-} // namespace stipple
+} // namespace stipple::detail

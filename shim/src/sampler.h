@@ -9,8 +9,7 @@
 
 #include "array_sets.h"
 #include "dimension.h"
-#include "blue_noise.h"
-#include "patterns.h"
+#include "pattern_registry.h"
 
 #include <stipple/stipple.h>
 
@@ -20,14 +19,16 @@
 #include <mutex>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 class Sampler {
 public:
+    // pattern: a valid public id (findPattern(pattern) != nullptr); flags: known STIPPLE_SAMPLER_FLAG_* bits.
     Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions,
             uint32_t flags = 0);
 
     uint32_t pattern() const { return pattern_; }
+    const PatternOps& patternOps() const { return ops_; }
     uint32_t samplesPerPixel() const { return samplesPerPixel_; }
     uint64_t seed() const { return seed_; }
     uint32_t flags() const { return flags_; }
@@ -57,23 +58,24 @@ private:
         uint32_t pixelX, pixelY, d, streamArity, block;
     };
     uint64_t pixelKey(const SetRef& set) const; // (seed, pattern, pixel, d, stream arity), before the block
-    uint64_t blockKey(uint64_t key, uint32_t block) const;
     const Dimension& streamDimension(uint32_t arity) const;
     bool blueNoise() const { return (flags_ & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) != 0; }
-    // The pattern dispatch: points [first, first + count) / point p of one block of one set.
+    // To the pattern: points [first, first + count) / point p of one block of one set.
     void fill(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
     void point(const SetRef& set, const Dimension& dim, uint32_t p, float* out) const;
     // The blue-noise flag's variants of fill (blue_noise.h); off the flagless path.
     void fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
 
     uint32_t pattern_;
+    const PatternOps& ops_;
+    PatternFill fill_; // ops_.fill for the batch ISA at creation
     uint32_t samplesPerPixel_;
     uint64_t seed_;
     uint64_t seedKey_; // seedKey(seed, the pattern's hash domain)
     std::vector<Dimension> dimensions_;
     uint32_t flags_;
     uint64_t tileSeedKey_; // seedKey(seed, the pattern's domain ^ BlueNoiseTile): keys of blue-noise tiles
-    // Streams of arity 1, 2, 3: sets of N points. A poisson stream acquires its family on first use.
+    // Streams of arity 1, 2, 3: sets of N points, prepared at creation or on first use (PatternOps).
     std::array<Dimension, 3> streams_;
     mutable std::array<std::once_flag, 3> streamFamilyOnce_;
     // Array streams: the set state of each (arity, k) asked, made on first use (arraySet).
@@ -81,11 +83,11 @@ private:
     mutable ArraySets arraySets_;
 };
 
-// Builds the per-pattern state of a set of `points` points of one arity (strata grid, Poisson family).
-Dimension makePatternDimension(uint32_t pattern, uint32_t arity, uint32_t count, uint32_t points);
+// A set of `points` points of one arity, k = count per sample, with the pattern's state prepared (PatternOps).
+Dimension makePatternDimension(const PatternOps& ops, uint32_t arity, uint32_t count, uint32_t points);
 
 // Validates desc completely (every message names the argument, its value and what was expected) and builds
-// the sampler. Throws stipple::Error.
+// the sampler. Throws stipple::detail::Error.
 Sampler* createSampler(const stipple_sampler_desc& desc);
 
 // The C handle (stipple_sampler_t*) is a Sampler* in disguise. struct stipple_sampler_t is never defined, so
@@ -93,4 +95,4 @@ Sampler* createSampler(const stipple_sampler_desc& desc);
 inline stipple_sampler toHandle(Sampler* sampler) { return reinterpret_cast<stipple_sampler>(sampler); }
 inline Sampler* fromHandle(stipple_sampler handle) { return reinterpret_cast<Sampler*>(handle); }
 
-} // namespace stipple
+} // namespace stipple::detail

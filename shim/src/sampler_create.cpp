@@ -4,19 +4,16 @@
 // size this library knows must be zero (a newer host asking for a feature we lack is an error, not ignored).
 // The dimension array's stride is dimensions[0].struct_size, and every entry must carry that same size.
 #include "error.h"
+#include "pattern_registry.h"
 #include "sampler.h"
 
 #include <bit>
 #include <cstring>
 #include <string>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
-
-std::string patternList() {
-    return "0 (independent), 1 (stratified), 2 (poisson), 3 (poisson-seed), 4 (sobol) or 5 (pmj02)";
-}
 
 void requireZeroTail(const void* object, size_t knownSize, size_t structSize, const std::string& argument) {
     const unsigned char* bytes = static_cast<const unsigned char*>(object);
@@ -29,11 +26,12 @@ void requireZeroTail(const void* object, size_t knownSize, size_t structSize, co
                             std::to_string(knownSize) + " bytes and requires unknown trailing fields to be zero");
 }
 
-Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32_t pattern, uint32_t samplesPerPixel) {
+Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, const PatternOps& pattern,
+                        uint32_t samplesPerPixel) {
     const std::string argument = "desc->dimensions[" + std::to_string(index) + "]";
-    if (in.arity < 1 || in.arity > 3)
-        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                    argument + ".arity is " + std::to_string(in.arity) + "; expected 1, 2 or 3");
+    if (in.arity < 1 || in.arity > pattern.limits.maxArity)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, argument + ".arity is " + std::to_string(in.arity) + "; expected " +
+                                                        arityList(pattern.limits.maxArity));
     const uint32_t count = in.count == 0 ? 1 : in.count;
     if (count > STIPPLE_MAX_VALUES_PER_SAMPLE)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE, argument + ".count is " + std::to_string(in.count) + "; expected 1.." +
@@ -46,11 +44,11 @@ Dimension makeDimension(const stipple_dimension_desc& in, uint32_t index, uint32
     if (in.reserved != 0)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                     argument + ".reserved is " + std::to_string(in.reserved) + "; expected 0");
-    if (pattern == STIPPLE_PATTERN_PMJ02 && count * samplesPerPixel > (1u << Pmj02Family::kMaxLog2Length))
+    if (count * samplesPerPixel > pattern.limits.maxSetSize)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                    argument + ": count * samples_per_pixel = " + std::to_string(count * samplesPerPixel) +
-                        "; the pmj02 pattern serves sets of at most " +
-                        std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
+                    argument + ": count * samples_per_pixel = " + std::to_string(count * samplesPerPixel) + "; the " +
+                        pattern.name + " pattern serves sets of at most " + std::to_string(pattern.limits.maxSetSize) +
+                        " points");
     Dimension dim = makePatternDimension(pattern, in.arity, count, count * samplesPerPixel);
     if (in.name) {
         const size_t length = strnlen(in.name, STIPPLE_MAX_NAME_LENGTH + 1);
@@ -72,9 +70,10 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
                                                    "; expected at least " + std::to_string(kDescSize) +
                                                    " (sizeof(stipple_sampler_desc))");
     requireZeroTail(&desc, kDescSize, desc.struct_size, "desc");
-    if (desc.pattern >= STIPPLE_PATTERN_COUNT)
+    const PatternOps* pattern = findPattern(desc.pattern);
+    if (!pattern)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                    "desc->pattern is " + std::to_string(desc.pattern) + "; expected " + patternList());
+                    "desc->pattern is " + std::to_string(desc.pattern) + "; expected " + patternIdList());
     if (desc.samples_per_pixel < 1 || desc.samples_per_pixel > STIPPLE_MAX_SAMPLES_PER_PIXEL)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
                                                     "; expected 1.." + std::to_string(STIPPLE_MAX_SAMPLES_PER_PIXEL));
@@ -88,11 +87,11 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
                     "desc->flags is " + std::to_string(desc.flags) + "; unknown bits " +
                         std::to_string(desc.flags & ~kKnownFlags) +
                         " (this library knows only STIPPLE_SAMPLER_FLAG_BLUE_NOISE = 1)");
-    // Streams serve sets of N points of every pattern, so N itself must be a set pmj02 serves.
-    if (desc.pattern == STIPPLE_PATTERN_PMJ02 && desc.samples_per_pixel > (1u << Pmj02Family::kMaxLog2Length))
+    // Streams serve sets of N points of every pattern, so N itself must be a set the pattern serves.
+    if (desc.samples_per_pixel > pattern->limits.maxSetSize)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +
-                                                    "; the pmj02 pattern serves sets of at most " +
-                                                    std::to_string(1u << Pmj02Family::kMaxLog2Length) + " points");
+                                                    "; the " + pattern->name + " pattern serves sets of at most " +
+                                                    std::to_string(pattern->limits.maxSetSize) + " points");
     if (desc.reserved != 0)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                     "desc->reserved is " + std::to_string(desc.reserved) + "; expected 0");
@@ -119,9 +118,9 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
                                                        std::to_string(entry.struct_size) + "; expected " +
                                                        std::to_string(stride) + " like desc->dimensions[0]");
         requireZeroTail(bytes, kDimensionSize, stride, "desc->dimensions[" + std::to_string(d) + "]");
-        dimensions.push_back(makeDimension(entry, d, desc.pattern, desc.samples_per_pixel));
+        dimensions.push_back(makeDimension(entry, d, *pattern, desc.samples_per_pixel));
     }
     return new Sampler(desc.pattern, desc.samples_per_pixel, desc.seed, std::move(dimensions), desc.flags);
 }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 // The progressive stratified order (pattern_stratified.cpp): seeds of the set and the grid's shape.
 struct ProgressiveKernelArgs {
@@ -32,4 +32,4 @@ struct PoissonKernelArgs {
 bool poissonLayeredAvx512(const PoissonKernelArgs& args, uint32_t arity, const float* stored, uint32_t points,
                           uint32_t first, uint32_t count, float* out);
 
-} // namespace stipple
+} // namespace stipple::detail

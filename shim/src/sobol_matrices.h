@@ -13,7 +13,7 @@
 #include <bit>
 #include <cstdint>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace detail {
 
@@ -55,4 +55,4 @@ constexpr uint32_t sobolSample(uint32_t index, uint32_t d) {
     return result;
 }
 
-} // namespace stipple
+} // namespace stipple::detail

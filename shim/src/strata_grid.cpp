@@ -10,7 +10,7 @@
 #include <map>
 #include <mutex>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -140,4 +140,4 @@ void StrataGrid::cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint
     }
 }
 
-} // namespace stipple
+} // namespace stipple::detail

@@ -18,7 +18,7 @@
 #include <memory>
 #include <vector>
 
-namespace stipple {
+namespace stipple::detail {
 
 struct StrataGrid {
     uint32_t arity = 1;
@@ -47,4 +47,4 @@ struct StrataGrid {
     void cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const;
 };
 
-} // namespace stipple
+} // namespace stipple::detail

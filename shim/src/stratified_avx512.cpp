@@ -8,7 +8,7 @@
 #if defined(STIPPLE_BATCH_ISA_CLONES)
 #include "avx512_intrinsics.h"
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 
@@ -143,7 +143,7 @@ template <uint32_t Arity>
                                            float* out) {
     const uint32_t bits = a.pointBits;
     const __m512i mask = _mm512_set1_epi32(int((1u << bits) - 1u));
-    const __m128i unused = stipple::count(32 - bits); // >= 32 shifts to 0, as reverseBits(v, 0) is 0
+    const __m128i unused = stipple::detail::count(32 - bits); // >= 32 shifts to 0, as reverseBits(v, 0) is 0
     const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
     // reverseBits(p, bits) of an aligned block p = b + i (16 | b, i < 16 <= 2^bits) is reverseBits(b) | that of i.
     // (A constant: computing it would sit on the path of a one-block call.)
@@ -156,8 +156,9 @@ template <uint32_t Arity>
     __m128i jitterShift[3], jitterShift16[3];
     for (uint32_t c = 0; c < Arity; ++c) {
         topMask[c] = _mm512_set1_epi32(int(((1u << a.axisBits[c]) - 1u) << (24 - a.axisBits[c])));
-        jitterShift[c] = stipple::count(8 + a.axisBits[c]);
-        jitterShift16[c] = stipple::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
+        jitterShift[c] = stipple::detail::count(8 + a.axisBits[c]);
+        jitterShift16[c] =
+            stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     for (uint32_t base = 0; base < count; base += 16) {
@@ -224,5 +225,5 @@ void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32
     }
 }
 
-} // namespace stipple
+} // namespace stipple::detail
 #endif

@@ -78,7 +78,8 @@ BOOST_AUTO_TEST_CASE(version_and_pattern_names) {
         BOOST_CHECK_EQUAL(stipple_pattern_from_name(name, &back), STIPPLE_OK);
         BOOST_CHECK_EQUAL(back, p);
     }
-    expectError(stipple_pattern_name(STIPPLE_PATTERN_COUNT, &name), STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is 6");
+    expectError(stipple_pattern_name(STIPPLE_PATTERN_COUNT, &name), STIPPLE_ERROR_INVALID_ARGUMENT,
+                ("pattern is " + std::to_string(STIPPLE_PATTERN_COUNT) + ";").c_str());
     expectError(stipple_pattern_name(0, nullptr), STIPPLE_ERROR_NULL_ARGUMENT, "out_name");
 }
 
@@ -102,7 +103,9 @@ BOOST_AUTO_TEST_CASE(create_rejects_bad_descriptions) {
         {"N too large", [](Layout& l) { l.desc.samples_per_pixel = STIPPLE_MAX_SAMPLES_PER_PIXEL + 1; },
          STIPPLE_ERROR_OUT_OF_RANGE, "samples_per_pixel"},
         {"unknown pattern", [](Layout& l) { l.desc.pattern = STIPPLE_PATTERN_COUNT; }, STIPPLE_ERROR_INVALID_ARGUMENT,
-         "pattern is 6"},
+         "desc->pattern is"},
+        {"unknown pattern, named", [](Layout& l) { l.desc.pattern = 1000; }, STIPPLE_ERROR_INVALID_ARGUMENT,
+         "pattern is 1000; expected 0 (independent), 1 (stratified)"},
         {"unknown pattern, large", [](Layout& l) { l.desc.pattern = 0xffffffffu; }, STIPPLE_ERROR_INVALID_ARGUMENT,
          "pattern"},
         {"too many dimensions", [](Layout& l) { l.desc.dimension_count = STIPPLE_MAX_DIMENSIONS + 1; },

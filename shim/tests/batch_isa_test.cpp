@@ -84,11 +84,11 @@ void checkPattern(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
 } // namespace
 
 BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
-    const stipple::BatchIsa widest = stipple::widestBatchIsa();
+    const stipple::detail::BatchIsa widest = stipple::detail::widestBatchIsa();
     BOOST_TEST_MESSAGE("widest batch ISA on this CPU: " << static_cast<uint32_t>(widest));
     for (uint32_t isa = 0; isa <= static_cast<uint32_t>(widest); ++isa) {
-        stipple::forceBatchIsa(static_cast<stipple::BatchIsa>(isa));
-        BOOST_REQUIRE(stipple::batchIsa() == static_cast<stipple::BatchIsa>(isa));
+        stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa));
+        BOOST_REQUIRE(stipple::detail::batchIsa() == static_cast<stipple::detail::BatchIsa>(isa));
         for (uint32_t pattern :
              {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL})
             for (uint32_t arity = 1; arity <= 3; ++arity)
@@ -98,12 +98,12 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
                     if (n <= 256) checkPattern(pattern, n, arity, 3);
                 }
     }
-    stipple::forceBatchIsa(widest);
+    stipple::detail::forceBatchIsa(widest);
 }
 
 BOOST_AUTO_TEST_CASE(forcing_is_clamped_to_the_cpu) {
-    const stipple::BatchIsa widest = stipple::widestBatchIsa();
-    stipple::forceBatchIsa(stipple::BatchIsa::Avx512);
-    BOOST_CHECK(stipple::batchIsa() == widest);
-    stipple::forceBatchIsa(widest);
+    const stipple::detail::BatchIsa widest = stipple::detail::widestBatchIsa();
+    stipple::detail::forceBatchIsa(stipple::detail::BatchIsa::Avx512);
+    BOOST_CHECK(stipple::detail::batchIsa() == widest);
+    stipple::detail::forceBatchIsa(widest);
 }

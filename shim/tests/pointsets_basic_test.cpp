@@ -13,7 +13,7 @@
 #include <limits>
 #include <vector>
 
-using namespace stipple::pointsets;
+using namespace stipple::detail::pointsets;
 
 namespace {
 

@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <vector>
 
-using namespace stipple::pointsets;
+using namespace stipple::detail::pointsets;
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-using namespace stipple::pointsets;
+using namespace stipple::detail::pointsets;
 
 BOOST_AUTO_TEST_CASE(concurrent_generation_is_bitwise_serial_generation) {
     struct Job {

@@ -33,16 +33,16 @@ void checkServedRho(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixel
 
     std::vector<float> stored;
     if (pattern == STIPPLE_PATTERN_POISSON) {
-        const uint64_t key = stipple::setKey(seed, stipple::HashDomain::Poisson, pixelX, 5, 0);
-        auto family = stipple::PoissonCache::global().acquire(arity, n);
-        const uint32_t j = stipple::poissonSetIndex(key, family->setCount());
+        const uint64_t key = stipple::detail::setKey(seed, stipple::detail::HashDomain::Poisson, pixelX, 5, 0);
+        auto family = stipple::detail::PoissonCache::global().acquire(arity, n);
+        const uint32_t j = stipple::detail::poissonSetIndex(key, family->setCount());
         stored.assign(family->set(j), family->set(j) + size_t(n) * arity);
     } else {
-        const uint64_t key = stipple::setKey(seed, stipple::HashDomain::PoissonSeed, pixelX, 5, 0);
-        stored = stipple::pointsets::generatePoissonSeed(int(arity), n, stipple::hashAt(key, 6));
+        const uint64_t key = stipple::detail::setKey(seed, stipple::detail::HashDomain::PoissonSeed, pixelX, 5, 0);
+        stored = stipple::detail::pointsets::generatePoissonSeed(int(arity), n, stipple::detail::hashAt(key, 6));
     }
-    const double rhoStored = stipple::pointsets::relativeRadius(int(arity), stored.data(), n);
-    const double rhoServed = stipple::pointsets::relativeRadius(int(arity), served.data(), n);
+    const double rhoStored = stipple::detail::pointsets::relativeRadius(int(arity), stored.data(), n);
+    const double rhoServed = stipple::detail::pointsets::relativeRadius(int(arity), served.data(), n);
     BOOST_CHECK_MESSAGE(std::abs(rhoServed - rhoStored) <= rhoTolerance(rhoStored),
                         patternName(pattern) << " arity " << arity << " N=" << n << ": served rho " << rhoServed
                                              << ", stored rho " << rhoStored);
@@ -66,22 +66,24 @@ BOOST_AUTO_TEST_CASE(pixels_get_different_sets) {
 }
 
 BOOST_AUTO_TEST_CASE(cache_stays_within_its_bound) {
-    auto& cache = stipple::PoissonCache::global();
+    auto& cache = stipple::detail::PoissonCache::global();
     // 2D families of >= 8192 points hold 32 sets of >= 64 KiB: about 2 MiB each (capacity, counted before any set
     // is generated). Acquiring 48 of them (~96 MiB) must evict down to the 64 MiB bound.
-    std::vector<std::shared_ptr<const stipple::PoissonFamily>> held;
+    std::vector<std::shared_ptr<const stipple::detail::PoissonFamily>> held;
     for (uint32_t i = 0; i < 48; ++i) {
         auto family = cache.acquire(2, 8192 + i);
-        BOOST_CHECK_EQUAL(family->setCount(), stipple::PoissonCache::setCountFor(2, 8192 + i));
-        BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
+        BOOST_CHECK_EQUAL(family->setCount(), stipple::detail::PoissonCache::setCountFor(2, 8192 + i));
+        BOOST_CHECK_LE(cache.bytesHeld(), stipple::detail::PoissonCache::kByteBudget);
         if (i < 40) held.push_back(family); // held families cannot be evicted ...
     }
     // ... so once the held ones fill the budget, further families are private and the bound still holds.
-    BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
-    BOOST_CHECK_GE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget - 4 * stipple::PoissonCache::kFamilyBytes);
+    BOOST_CHECK_LE(cache.bytesHeld(), stipple::detail::PoissonCache::kByteBudget);
+    BOOST_CHECK_GE(cache.bytesHeld(),
+                   stipple::detail::PoissonCache::kByteBudget - 4 * stipple::detail::PoissonCache::kFamilyBytes);
     held.clear();
     auto again = cache.acquire(2, 9000); // now unheld families can be evicted to make room
-    BOOST_CHECK_LE(cache.bytesHeld(), stipple::PoissonCache::kByteBudget);
-    BOOST_CHECK_EQUAL(stipple::PoissonCache::setCountFor(2, 1u << 22), 1u);
-    BOOST_CHECK_EQUAL(stipple::PoissonCache::setCountFor(1, 16), stipple::PoissonCache::kMaxSetsPerFamily);
+    BOOST_CHECK_LE(cache.bytesHeld(), stipple::detail::PoissonCache::kByteBudget);
+    BOOST_CHECK_EQUAL(stipple::detail::PoissonCache::setCountFor(2, 1u << 22), 1u);
+    BOOST_CHECK_EQUAL(stipple::detail::PoissonCache::setCountFor(1, 16),
+                      stipple::detail::PoissonCache::kMaxSetsPerFamily);
 }

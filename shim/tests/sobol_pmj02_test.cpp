@@ -26,7 +26,7 @@
 using namespace stipple::testing;
 
 using namespace stipple::test;
-using stipple::FixedPoint2;
+using stipple::detail::FixedPoint2;
 
 namespace {
 
@@ -46,13 +46,14 @@ uint32_t floorLog2(uint32_t m) { return 31 - static_cast<uint32_t>(__builtin_clz
 
 BOOST_AUTO_TEST_CASE(generator_prefixes_are_elementary_nets) {
     for (uint64_t seed = 0; seed < 8; ++seed) {
-        const std::vector<FixedPoint2> points = stipple::generatePmj02(12, seed);
+        const std::vector<FixedPoint2> points = stipple::detail::generatePmj02(12, seed);
         for (uint32_t k = 0; k <= 12; ++k)
-            BOOST_CHECK_MESSAGE(stipple::isElementaryNet(points.data(), k), "pmj02 seed " << seed << " prefix 2^" << k);
+            BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(points.data(), k),
+                                "pmj02 seed " << seed << " prefix 2^" << k);
     }
     // The checker itself fails on a set that is not a net: two points in one column of 2 x 1.
     const FixedPoint2 bad[2] = {{0x10000000u, 0x10000000u}, {0x20000000u, 0x90000000u}};
-    BOOST_CHECK(!stipple::isElementaryNet(bad, 1));
+    BOOST_CHECK(!stipple::detail::isElementaryNet(bad, 1));
 }
 
 BOOST_AUTO_TEST_CASE(served_prefixes_are_elementary_nets) {
@@ -64,7 +65,7 @@ BOOST_AUTO_TEST_CASE(served_prefixes_are_elementary_nets) {
                     for (uint32_t pixel = 0; pixel < 3; ++pixel) {
                         const std::vector<FixedPoint2> xy = xyOf(fillPixel(s.get(), pixel, 9, 0), arity);
                         for (uint32_t j = 0; j <= floorLog2(n * k); ++j)
-                            BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data(), j),
+                            BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(xy.data(), j),
                                                 patternName(pattern)
                                                     << " arity " << arity << " N=" << n << " k=" << k << " pixel "
                                                     << pixel << ": prefix 2^" << j << " not a net");
@@ -96,7 +97,7 @@ BOOST_AUTO_TEST_CASE(points_past_the_set_continue_the_sequence) {
     for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02})
         for (uint32_t n : {16u, 256u, 97u}) {
             auto handle = makeSampler(pattern, n, 77, {{2, 1}});
-            const stipple::Sampler& sampler = *stipple::fromHandle(handle.get());
+            const stipple::detail::Sampler& sampler = *stipple::detail::fromHandle(handle.get());
             std::vector<float> values(size_t(4) * n * 2);
             for (uint32_t i = 0; i < 4 * n; ++i) sampler.sample(5, 6, i, 0, values.data() + size_t(i) * 2);
             // Block 0 is the set itself.
@@ -105,11 +106,11 @@ BOOST_AUTO_TEST_CASE(points_past_the_set_continue_the_sequence) {
             const std::vector<FixedPoint2> xy = xyOf(values, 2);
             const uint32_t j = floorLog2(n);
             for (uint32_t b = 0; b < 4; ++b)
-                BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data() + size_t(b) * n, j),
+                BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(xy.data() + size_t(b) * n, j),
                                     patternName(pattern) << " N=" << n << " block " << b << ": prefix 2^" << j);
             if (pattern == STIPPLE_PATTERN_SOBOL && (n & (n - 1)) == 0)
                 for (uint32_t b = 0; b < 4; b += 2)
-                    BOOST_CHECK_MESSAGE(stipple::isElementaryNet(xy.data() + size_t(b) * n, j + 1),
+                    BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(xy.data() + size_t(b) * n, j + 1),
                                         "sobol N=" << n << ": blocks " << b << " and " << b + 1 << " are not one net");
         }
 }

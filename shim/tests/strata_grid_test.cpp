@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-using stipple::StrataGrid;
+using stipple::detail::StrataGrid;
 
 namespace {
 
@@ -75,14 +75,14 @@ BOOST_AUTO_TEST_CASE(large_set_sizes) {
 BOOST_AUTO_TEST_CASE(fast_divider_is_exact) {
     std::mt19937 rng(7);
     for (uint32_t d = 1; d <= 600; ++d) {
-        const stipple::FastDivider divider(d);
+        const stipple::detail::FastDivider divider(d);
         uint32_t wrong = 0;
         for (uint32_t n = 0; n < (1u << 22); n += 1 + (d % 97)) wrong += divider.divide(n) != n / d;
         BOOST_REQUIRE_MESSAGE(wrong == 0, "divisor " << d << ": " << wrong << " wrong quotients");
     }
     for (int t = 0; t < 300; ++t) {
         const uint32_t d = rng() % (1u << 22) + 1;
-        const stipple::FastDivider divider(d);
+        const stipple::detail::FastDivider divider(d);
         uint32_t wrong = 0;
         for (int j = 0; j < 2000; ++j) {
             const uint32_t n = rng() % (1u << 22);
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(hashed_permutation_is_a_bijection) {
         for (uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
             std::vector<uint8_t> hit(length, 0);
             for (uint32_t i = 0; i < length; ++i) {
-                const uint32_t j = stipple::permuteIndex(i, length, seed);
+                const uint32_t j = stipple::detail::permuteIndex(i, length, seed);
                 if (j < length) hit[j]++;
             }
             BOOST_CHECK(std::all_of(hit.begin(), hit.end(), [](uint8_t h) { return h == 1; }));
@@ -107,7 +107,7 @@ BOOST_AUTO_TEST_CASE(hashed_permutation_is_a_bijection) {
 }
 
 BOOST_AUTO_TEST_CASE(unit_float_never_reaches_one) {
-    BOOST_CHECK_LT(stipple::unitFloat(~uint64_t(0)), 1.0f);
-    BOOST_CHECK_EQUAL(stipple::unitFloat(~uint64_t(0)), 0x1.fffffep-1f);
-    BOOST_CHECK_EQUAL(stipple::unitFloat(0), 0.0f);
+    BOOST_CHECK_LT(stipple::detail::unitFloat(~uint64_t(0)), 1.0f);
+    BOOST_CHECK_EQUAL(stipple::detail::unitFloat(~uint64_t(0)), 0x1.fffffep-1f);
+    BOOST_CHECK_EQUAL(stipple::detail::unitFloat(0), 0.0f);
 }

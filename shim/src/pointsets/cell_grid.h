@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 template <int D>
 struct CellGrid {
@@ -54,4 +54,4 @@ struct CellGrid {
     }
 };
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

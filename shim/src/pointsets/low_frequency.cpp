@@ -10,7 +10,7 @@
 
 #include "torus.h"
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 namespace {
 
 using Complex = std::complex<double>;
@@ -109,4 +109,4 @@ template void cancelLowFrequencies<3>(std::vector<float>&, uint32_t, int, int);
 template double lowFrequencyEnergy<2>(const std::vector<float>&, uint32_t, int);
 template double lowFrequencyEnergy<3>(const std::vector<float>&, uint32_t, int);
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

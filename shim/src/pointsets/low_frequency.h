@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 // Cancels the modes 0 < |k| <= maxFrequency (integer k, one of each +-k pair) in `iterations` steps.
 // pts: n points, D interleaved floats each, in [0,1); returned in [0,1), same order.
@@ -22,4 +22,4 @@ void cancelLowFrequencies(std::vector<float>& pts, uint32_t n, int maxFrequency,
 template <int D>
 double lowFrequencyEnergy(const std::vector<float>& pts, uint32_t n, int maxFrequency);
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 template <int D>
 class OrthantTree {
@@ -151,4 +151,4 @@ private:
     std::vector<Point> points_;
 };
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

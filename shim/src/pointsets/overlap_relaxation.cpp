@@ -20,7 +20,7 @@
 #include "cell_grid.h"
 #include "torus.h"
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 namespace {
 
 // Minimum-image difference for |d| < 1.5 (coordinates drift slightly outside [0,1) within a pass).
@@ -186,4 +186,4 @@ RelaxStats relaxOverlaps(std::vector<float>& pts, uint32_t n, const RelaxParams&
 template RelaxStats relaxOverlaps<2>(std::vector<float>&, uint32_t, const RelaxParams&);
 template RelaxStats relaxOverlaps<3>(std::vector<float>&, uint32_t, const RelaxParams&);
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 struct RelaxParams {
     float diameter; // R, absolute
@@ -30,4 +30,4 @@ struct RelaxStats {
 template <int D>
 RelaxStats relaxOverlaps(std::vector<float>& pts, uint32_t n, const RelaxParams& params);
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

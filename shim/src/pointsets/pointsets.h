@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 // Largest n served (the C ABI's STIPPLE_MAX_SET_SIZE). Larger n, like dim outside 1..3 or n = 0, is invalid
 // input: the generators return an empty vector rather than attempt gigabytes of grid.
@@ -37,4 +37,4 @@ double meanNearestNeighbourRadius(int dim, const float* points, uint32_t n);
 // d_max of n points in dim dimensions (see relativeRadius).
 double maxPackingDistance(int dim, uint32_t n);
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

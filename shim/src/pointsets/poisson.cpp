@@ -35,7 +35,7 @@
 #include "random.h"
 #include "torus.h"
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 namespace {
 
 // Relaxation diameter and stopping target, as fractions of d_max (measured in POINTSETS.md).
@@ -209,4 +209,4 @@ std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed) {
     return dim == 2 ? relaxedSet<2>(n, stream, tuning) : relaxedSet<3>(n, stream, tuning);
 }
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

@@ -21,7 +21,7 @@
 #include "random.h"
 #include "torus.h"
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 namespace {
 
 constexpr int kTryLimit = 100;
@@ -90,4 +90,4 @@ std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed) {
     }
 }
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 inline uint64_t mix64(uint64_t z) {
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -38,4 +38,4 @@ inline uint64_t deriveSeed(uint64_t seed, uint64_t stream) {
     return mix64(seed ^ mix64(stream + 0x632be59bd9b4e019ull));
 }
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

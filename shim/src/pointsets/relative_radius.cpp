@@ -12,7 +12,7 @@
 #include "cell_grid.h"
 #include "torus.h"
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 namespace {
 
 template <int D>
@@ -89,4 +89,4 @@ double meanNearestNeighbourRadius(int dim, const float* points, uint32_t n) {
     return sum / double(n) / packingDistance(dim, n);
 }
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <complex>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 PowerSpectrum2D::PowerSpectrum2D(int maxFrequency)
     : K_(std::max(1, maxFrequency)), W_(2 * K_ + 1), sum_(size_t(W_) * W_, 0.0) {}
@@ -62,4 +62,4 @@ std::vector<PowerSpectrum2D::Ring> PowerSpectrum2D::rings(bool skipAxes) const {
     return out;
 }
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

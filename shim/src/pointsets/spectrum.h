@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 class PowerSpectrum2D {
 public:
@@ -40,4 +40,4 @@ private:
     std::vector<double> sum_; // (2K+1)^2, row ky, column kx
 };
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets

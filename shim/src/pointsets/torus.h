@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace stipple::pointsets {
+namespace stipple::detail::pointsets {
 
 // Largest float below 1: every coordinate we hand out is <= this.
 inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
@@ -37,4 +37,4 @@ inline double packingDistance(int dim, uint32_t n) {
     }
 }
 
-} // namespace stipple::pointsets
+} // namespace stipple::detail::pointsets
