@@ -13,7 +13,7 @@
 #include <memory>
 #include <mutex>
 
-namespace stipple {
+namespace stipple::detail {
 
 class ArraySets {
 public:
@@ -57,4 +57,4 @@ private:
     std::mutex mutex_;
 };
 
-} // namespace stipple
+} // namespace stipple::detail

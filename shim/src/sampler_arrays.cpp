@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace stipple {
+namespace stipple::detail {
 
 namespace {
 // The SetRef stream word of array (arity, k): bit 15 marks arrays; k <= 1024 fits in bits 2..12.
@@ -18,7 +18,7 @@ static_assert(STIPPLE_MAX_VALUES_PER_SAMPLE << 2 < kArrayTag, "array tags must s
 } // namespace
 
 const Dimension& Sampler::arraySet(uint32_t arity, uint32_t k) const {
-    return arraySets_.get(arity, k, [&] { return makePatternDimension(pattern_, arity, k, k * samplesPerPixel_); });
+    return arraySets_.get(arity, k, [&] { return makePatternDimension(ops_, arity, k, k * samplesPerPixel_); });
 }
 
 void Sampler::array(uint32_t pixelX, uint32_t pixelY, uint32_t sampleIndex, uint32_t index, uint32_t arity,
@@ -46,4 +46,4 @@ void Sampler::arrayFill(uint32_t pixelX, uint32_t pixelY, uint32_t firstSample, 
     }
 }
 
-} // namespace stipple
+} // namespace stipple::detail
