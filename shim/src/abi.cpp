@@ -8,6 +8,7 @@
 
 #include <stipple/stipple.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -227,40 +228,37 @@ STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, 
 
 namespace {
 
-stipple_pattern_limits patternLimits(uint32_t pattern) {
+stipple_pattern_limits patternLimits(const stipple::detail::PatternOps& ops) {
     stipple_pattern_limits limits{};
     limits.struct_size = sizeof limits;
-    const bool pmj02 = pattern == STIPPLE_PATTERN_PMJ02; // generation grows faster than linearly past 2^16
-    const uint32_t pmj02Max = 1u << stipple::Pmj02Family::kMaxLog2Length;
-    limits.max_samples_per_pixel = pmj02 ? pmj02Max : STIPPLE_MAX_SAMPLES_PER_PIXEL;
-    limits.max_set_size = pmj02 ? pmj02Max : STIPPLE_MAX_SET_SIZE;
+    limits.max_samples_per_pixel = std::min<uint32_t>(ops.limits.maxSetSize, STIPPLE_MAX_SAMPLES_PER_PIXEL);
+    limits.max_set_size = ops.limits.maxSetSize;
     limits.max_values_per_sample = STIPPLE_MAX_VALUES_PER_SAMPLE;
     limits.max_dimensions = STIPPLE_MAX_DIMENSIONS;
     limits.flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
     return limits;
 }
 
-void checkPattern(uint32_t pattern) {
-    if (pattern >= STIPPLE_PATTERN_COUNT)
-        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "pattern is " + std::to_string(pattern) + "; expected 0.." +
-                                                        std::to_string(STIPPLE_PATTERN_COUNT - 1));
+const stipple::detail::PatternOps& checkedPattern(uint32_t pattern) {
+    const stipple::detail::PatternOps* ops = stipple::detail::findPattern(pattern);
+    if (!ops)
+        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                    "pattern is " + std::to_string(pattern) + "; expected " + stipple::detail::patternIdList());
+    return *ops;
 }
 
 // k of an array: 1..max, and k * N within the sampler's pattern's set size.
-void checkArrayCount(const stipple::Sampler& s, uint32_t k) {
-    const stipple_pattern_limits limits = patternLimits(s.pattern());
-    if (k < 1 || k > limits.max_values_per_sample)
+void checkArrayCount(const stipple::detail::Sampler& s, uint32_t k) {
+    const stipple::detail::PatternOps& ops = s.patternOps();
+    if (k < 1 || k > STIPPLE_MAX_VALUES_PER_SAMPLE)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                    "k is " + std::to_string(k) + "; expected 1.." + std::to_string(limits.max_values_per_sample));
-    if (uint64_t(k) * s.samplesPerPixel() > limits.max_set_size) {
-        const char* name = "";
-        stipple_pattern_name(s.pattern(), &name);
+                    "k is " + std::to_string(k) + "; expected 1.." + std::to_string(STIPPLE_MAX_VALUES_PER_SAMPLE));
+    if (uint64_t(k) * s.samplesPerPixel() > ops.limits.maxSetSize)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
                     "k is " + std::to_string(k) + ": k * samples_per_pixel = " +
-                        std::to_string(uint64_t(k) * s.samplesPerPixel()) + "; the " + name +
-                        " pattern serves sets of at most " + std::to_string(limits.max_set_size) +
+                        std::to_string(uint64_t(k) * s.samplesPerPixel()) + "; the " + ops.name +
+                        " pattern serves sets of at most " + std::to_string(ops.limits.maxSetSize) +
                         " points (stipple_pattern_get_limits)");
-    }
 }
 
 } // namespace
@@ -271,8 +269,8 @@ STIPPLE_API stipple_status stipple_sampler_array(stipple_sampler sampler, uint32
                                                  uint32_t sample_index, uint32_t array_index, uint32_t arity,
                                                  uint32_t k, float* out, size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
-        checkArity(arity);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
+        checkArity(s, arity);
         checkArrayCount(s, k);
         requireNonNull(out, "out");
         checkCapacity(out_count, size_t(k) * arity);
@@ -285,8 +283,8 @@ STIPPLE_API stipple_status stipple_sampler_array_fill(stipple_sampler sampler, u
                                                       uint32_t array_index, uint32_t arity, uint32_t k, float* out,
                                                       size_t out_count) {
     return callGuarded(__func__, [&] {
-        const stipple::Sampler& s = checkedSampler(sampler);
-        checkArity(arity);
+        const stipple::detail::Sampler& s = checkedSampler(sampler);
+        checkArity(s, arity);
         checkArrayCount(s, k);
         if (sample_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
         if (uint64_t(first_sample) + sample_count > (uint64_t(1) << 32))
@@ -302,16 +300,16 @@ STIPPLE_API stipple_status stipple_sampler_array_fill(stipple_sampler sampler, u
 STIPPLE_API stipple_status stipple_pattern_count(uint32_t* out_count) {
     return callGuarded(__func__, [&] {
         requireNonNull(out_count, "out_count");
-        *out_count = STIPPLE_PATTERN_COUNT;
+        *out_count = stipple::detail::patternCount();
     });
 }
 
 STIPPLE_API stipple_status stipple_pattern_get_limits(uint32_t pattern, stipple_pattern_limits* out_limits) {
     return callGuarded(__func__, [&] {
-        checkPattern(pattern);
+        const stipple::detail::PatternOps& ops = checkedPattern(pattern);
         prepareOutput(out_limits, "out_limits");
         const uint32_t size = out_limits->struct_size;
-        *out_limits = patternLimits(pattern);
+        *out_limits = patternLimits(ops);
         out_limits->struct_size = size;
     });
 }
@@ -333,19 +331,15 @@ STIPPLE_API stipple_status stipple_pattern_parse(const char* name, uint32_t* out
             flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
             base.resize(plus);
         }
-        std::string names;
-        for (uint32_t p = 0; p < STIPPLE_PATTERN_COUNT; ++p) {
-            const char* known = "";
-            stipple_pattern_name(p, &known);
-            if (base == known) {
-                *out_pattern = p;
-                *out_flags = flags;
-                return;
-            }
-            names += (p == 0 ? "\"" : p + 1 == STIPPLE_PATTERN_COUNT ? " or \"" : ", \"") + std::string(known) + "\"";
+        uint32_t id = 0;
+        if (stipple::detail::findPatternId(base.c_str(), &id)) {
+            *out_pattern = id;
+            *out_flags = flags;
+            return;
         }
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT, "name is \"" + std::string(name, length) + (length == 128 ? "...\"" : "\"") +
-                                                        "; expected " + names + ", optionally followed by \"" +
+                                                        "; expected " + stipple::detail::patternNameList() +
+                                                        ", optionally followed by \"" +
                                                         kBlueNoise + "\"");
     });
 }
