@@ -10,15 +10,21 @@
 set -euo pipefail
 dir=$(cd "$1" && pwd)
 shift
+# ctest selects the tests; their commands are read from the CTestTestfile.cmake files (ctest leaves out the command
+# of a test whose program is not built yet).
 ctest --test-dir "$dir" --show-only=json-v1 "$@" | python3 -c '
-import json, re, sys
-root = re.escape(sys.argv[1])
-program = re.compile(root + r"/bin/([A-Za-z0-9_.+-]+)")
-library = re.compile(root + r"/lib/lib([A-Za-z0-9_+-]+)\.so")
+import json, pathlib, re, sys
+root = sys.argv[1]
+selected = {t["name"] for t in json.load(sys.stdin)["tests"]}
+program = re.compile(re.escape(root) + r"/bin/([A-Za-z0-9_.+-]+)")
+library = re.compile(re.escape(root) + r"/lib/lib([A-Za-z0-9_+-]+)[.]so")
+registration = re.compile(r"^add_test\(\[=\[(.*?)\]=\] (.*)\)$")
 targets = {"stipple"}
-for test in json.load(sys.stdin)["tests"]:
-    for word in test.get("command", []):
-        targets.update(program.findall(word))
-        targets.update(library.findall(word))
+for testfile in pathlib.Path(root).rglob("CTestTestfile.cmake"):
+    for line in testfile.read_text().splitlines():
+        match = registration.match(line)
+        if match and match.group(1) in selected:
+            targets.update(program.findall(match.group(2)))
+            targets.update(library.findall(match.group(2)))
 print("\n".join(sorted(targets)))
 ' "$dir"
