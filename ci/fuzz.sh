@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Fuzzing CI: build the three libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each
-# for a bounded time over its seed corpus and its regressions. Exit status 1 when any harness finds a crash,
-# a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/ and the command
-# to replay it is printed. Fix the bug, then add the file to the harness's regressions folder below (replayed by
+# Fuzzing CI: build the libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each for a bounded
+# time over its seed corpus and its regressions, STIPPLE_JOBS harnesses at a time. Exit status 1 when any harness
+# finds a crash, a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/
+# and the command to replay it is printed. Fix the bug, then add the file to the harness's regressions folder below (replayed by
 # CTest).
 #
 # Environment (all optional):
 #   STIPPLE_FUZZ_DIR      build directory (default: the fuzz preset's build/fuzz)
 #   STIPPLE_FUZZ_SECONDS  seconds per harness (default 20; a longer local run: 600 or more)
-#   STIPPLE_JOBS          parallel build jobs (default 2)
+#   STIPPLE_JOBS          parallel build jobs and harnesses run at once (default 2)
 #   STIPPLE_FUZZ_ONLY     space-separated harness names to run (default: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,28 +33,48 @@ harnesses=("stipple_api_fuzzer shim corpus regressions" "scene_fuzzer integrator
            "provenance_fuzzer validation provenance-corpus provenance-regressions")
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-status=0
-for entry in "${harnesses[@]}"; do
-    read -r name part seeds regressions <<<"$entry"
-    [[ -n "${STIPPLE_FUZZ_ONLY:-}" && " $STIPPLE_FUZZ_ONLY " != *" $name "* ]] && continue
-    out="$dir/fuzz-out/$name"
+
+# One harness for $seconds; its lines go to $out/summary.txt and its verdict (0 or 1) to $out/status.
+fuzz_one() { # name part seeds regressions
+    local name=$1 part=$2 seeds=$3 regressions=$4
+    local out="$dir/fuzz-out/$name"
     rm -rf "$out"
     mkdir -p "$out/corpus"  # new inputs go here, never into the repository
-    log="$out/log.txt"
-    echo "fuzz.sh: $name for ${seconds}s"
+    local log="$out/log.txt"
     if "$dir/bin/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
         -print_final_stats=1 -artifact_prefix="$out/" \
         "$out/corpus" "$root/$part/fuzz/$seeds" "$root/$part/fuzz/$regressions" >"$log" 2>&1; then
+        local execs
         execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-        echo "fuzz.sh: $name ok: ${execs:-?} executions, $(ls "$out/corpus" | wc -l) new corpus inputs"
+        echo "fuzz.sh: $name ok: ${execs:-?} executions, $(ls "$out/corpus" | wc -l) new corpus inputs" >"$out/summary.txt"
+        echo 0 >"$out/status"
     else
-        status=1
-        echo "fuzz.sh: $name FAILED; last lines of $log:"
-        tail -40 "$log"
-        for artifact in "$out"/crash-* "$out"/leak-* "$out"/timeout-* "$out"/oom-*; do
-            [[ -e "$artifact" ]] && echo "fuzz.sh: reproduce with: $dir/bin/$name $artifact"
-        done
+        {
+            echo "fuzz.sh: $name FAILED; last lines of $log:"
+            tail -40 "$log"
+            for artifact in "$out"/crash-* "$out"/leak-* "$out"/timeout-* "$out"/oom-*; do
+                [[ -e "$artifact" ]] && echo "fuzz.sh: reproduce with: $dir/bin/$name $artifact"
+            done
+        } >"$out/summary.txt"
+        echo 1 >"$out/status"
     fi
+}
+
+# The harnesses are single-threaded: $jobs of them at a time, each for its full $seconds.
+names=()
+for entry in "${harnesses[@]}"; do
+    read -r name part seeds regressions <<<"$entry"
+    [[ -n "${STIPPLE_FUZZ_ONLY:-}" && " $STIPPLE_FUZZ_ONLY " != *" $name "* ]] && continue
+    while (( $(jobs -rp | wc -l) >= jobs )); do wait -n || true; done
+    echo "fuzz.sh: $name for ${seconds}s"
+    fuzz_one "$name" "$part" "$seeds" "$regressions" &
+    names+=("$name")
+done
+wait
+status=0
+for name in "${names[@]}"; do
+    cat "$dir/fuzz-out/$name/summary.txt"
+    [[ "$(cat "$dir/fuzz-out/$name/status")" == 0 ]] || status=1
 done
 echo "fuzz.sh: $((SECONDS - start)) s, status $status"
 exit $status

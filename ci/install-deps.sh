@@ -1,36 +1,56 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages stipple needs. Idempotent: when everything is present it only checks.
+# Installs the Debian 12 packages a job needs. Idempotent: when everything is present it only checks.
 # Non-interactive (CI has no standard input); never installs recommended extras.
+#
+#   bash ci/install-deps.sh [SET...]     SET: main or tests (default: both)
+#     main   what ci/main.sh builds and runs: the shim, the renderer, stipple-validate and the Figure 3 program
+#     tests  what ci/test.sh adds: Boost.Test, Google Benchmark, the tests' tools (python3, abidiff, Chromium,
+#            a one-node Slurm) and clang for the fuzz harnesses
 set -euo pipefail
 
-packages=(
-  build-essential cmake ninja-build pkg-config git
+main_packages=(
+  build-essential cmake ninja-build git
   libembree-dev libtbb-dev
-  libopenimageio-dev openimageio-tools python3-imath
-  libopencolorio-dev
+  libopenimageio-dev libopencolorio-dev
   libyaml-cpp-dev nlohmann-json3-dev
+  libboost-dev            # Boost.Math (statistics/)
+  gnuplot-nox             # the report's and Figure 3's plots
+)
+test_packages=(
   libboost-test-dev
   libbenchmark-dev
-  gnuplot-nox
-  abigail-tools
-  python3
+  pkg-config              # shim.install's pkg-config consumer
+  python3 python3-numpy   # the Python example hosts (shim.quarter_disk_py, shim.stipple_numpy) and test scripts
+  python3-yaml            # validation/slurm/estimate-cost.py
+  abigail-tools           # shim.abi, shim.abi_since_1_0
   chromium                # headless: the report's browser test (validation.report_browser)
-  clang libclang-rt-14-dev
-  slurm-wlm slurmctld slurmd slurm-client munge
-  nlohmann-json3-dev
-  python3-yaml
-  python3-numpy python3-venv python3-pip python3-setuptools   # the Python package, its tests and pip install
+  clang libclang-rt-14-dev                     # ci/fuzz.sh: libFuzzer harnesses
+  slurm-wlm slurmctld slurmd slurm-client munge # validation.slurm_array_equals_single_run
+  openimageio-tools       # oiiotool, for the scenes' previews (scenes/README.md)
+  python3-venv python3-pip python3-setuptools   # the Python package: its tests and the offline pip install
 )
 
+sets=("$@")
+[ ${#sets[@]} -gt 0 ] || sets=(main tests)
+packages=()
+for set in "${sets[@]}"; do
+  case "$set" in
+    main) packages+=("${main_packages[@]}") ;;
+    tests) packages+=("${main_packages[@]}" "${test_packages[@]}") ;;
+    *) echo "install-deps: unknown set '$set' (known: main, tests)" >&2; exit 2 ;;
+  esac
+done
+
 missing=()
-for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+for p in $(printf '%s\n' "${packages[@]}" | sort -u); do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  if [ "$status" != "install ok installed" ]; then
     missing+=("$p")
   fi
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages present"
+  echo "install-deps: all $(printf '%s\n' "${packages[@]}" | sort -u | wc -l) packages of '${sets[*]}' present"
   exit 0
 fi
 

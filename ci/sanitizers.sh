@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sanitizer CI: build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
 # labels `slow` and `slurm` (the Slurm test checks job orchestration, which the release run covers); build the
-# tsan preset and run label `parallel` (tests that exercise several threads).
+# tsan preset and run label `parallel` (tests that exercise several threads). Each stage builds only the targets
+# its tests run (ci/test-targets.sh), not the whole tree.
 # Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
 #
 # Environment (all optional):
@@ -21,19 +22,24 @@ which=${STIPPLE_SANITIZERS:-asan tsan}
 export BOOST_TEST_COLOR_OUTPUT=no
 supp="$PWD/ci/sanitizers.supp"
 
-configure_and_build() { # preset, build dir
-    local args=(--preset "$1")
-    [[ -n "$2" ]] && args+=(-B "$2")
+configure_and_build() { # preset, build dir, ctest selection...
+    local preset=$1 dir=$2
+    shift 2
+    local args=(--preset "$preset" -B "$dir")
     # The city generator's scenes are not needed to find memory or thread errors; keep the build small.
     cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
-    cmake --build "${2:-build/$1}" -j "$jobs"
+    local targets
+    targets=$(bash ci/test-targets.sh "$dir" "$@")
+    echo "sanitizers.sh: $preset: building $(wc -w <<<"$targets") targets for ctest $*"
+    # shellcheck disable=SC2086 # one word per target
+    cmake --build "$dir" -j "$jobs" --target $targets
 }
 
 status=0
 start=$SECONDS
 if [[ " $which " == *" asan "* ]]; then
     dir=${STIPPLE_ASAN_DIR:-build/asan}
-    configure_and_build asan "${STIPPLE_ASAN_DIR:-}"
+    configure_and_build asan "$dir" -LE 'slow|slurm'
     # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
     # third-party libraries (see ci/sanitizers.supp).
     export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
@@ -45,9 +51,9 @@ if [[ " $which " == *" asan "* ]]; then
 fi
 if [[ " $which " == *" tsan "* ]]; then
     dir=${STIPPLE_TSAN_DIR:-build/tsan}
-    configure_and_build tsan "${STIPPLE_TSAN_DIR:-}"
-    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
     exclude=${STIPPLE_TSAN_EXCLUDE:-}
+    configure_and_build tsan "$dir" -L parallel ${exclude:+-E "$exclude"}
+    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
     ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j 1 --output-on-failure --timeout 900 || status=1
     unset TSAN_OPTIONS
     echo "sanitizers.sh: tsan done after $((SECONDS - start)) s"

@@ -6,7 +6,7 @@
 # Any failure stops the run with a non-zero status. Set STIPPLE_QUICK_TESTS=1 to run step 1 only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash ci/install-deps.sh
+bash ci/install-deps.sh tests
 export BOOST_TEST_COLOR_OUTPUT=no
 start=$SECONDS
 

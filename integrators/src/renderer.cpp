@@ -46,6 +46,8 @@ std::string shimIdentity(const std::string& shimPath) { return ShimLibrary::get(
 
 std::vector<std::string> patternNames(const std::string& shimPath) { return ShimLibrary::get(shimPath).patternNames(); }
 
+std::vector<std::string> integratorNames() { return registeredIntegrators(); }
+
 namespace {
 
 constexpr int kTileSize = 16;

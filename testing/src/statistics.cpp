@@ -1,8 +1,9 @@
 #include <stipple/testing/statistics.h>
 
+#include <stipple/statistics/student_t.h>
+
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
-#include <boost/math/distributions/students_t.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -49,21 +50,16 @@ double sidakZ(double alpha, int tests) {
 }
 
 double studentCritical(double alpha, double degreesOfFreedom) {
-    return boost::math::quantile(boost::math::complement(boost::math::students_t(degreesOfFreedom), alpha / 2));
+    return statistics::studentTCritical(alpha, degreesOfFreedom);
 }
 
-double studentTwoSidedP(double t, double degreesOfFreedom) {
-    return 2 * boost::math::cdf(boost::math::complement(boost::math::students_t(degreesOfFreedom), std::fabs(t)));
-}
+double studentTwoSidedP(double t, double degreesOfFreedom) { return statistics::studentTTwoSidedP(t, degreesOfFreedom); }
 
 double welchPValue(const MeanEstimate& a, const MeanEstimate& b) {
-    const double v = a.varianceOfMean + b.varianceOfMean;
-    if (v == 0) return a.mean == b.mean ? 1.0 : 0.0;
-    const double t = (a.mean - b.mean) / std::sqrt(v);
-    const double den =
-        a.varianceOfMean * a.varianceOfMean / (a.k - 1) + b.varianceOfMean * b.varianceOfMean / (b.k - 1);
-    const double dof = den > 0 ? v * v / den : double(a.k + b.k - 2);
-    return studentTwoSidedP(t, dof);
+    const statistics::WelchDifference d =
+        statistics::welchDifference({a.mean, a.varianceOfMean, double(a.k)}, {b.mean, b.varianceOfMean, double(b.k)});
+    if (d.standardError == 0) return a.mean == b.mean ? 1.0 : 0.0;
+    return studentTwoSidedP(d.difference / d.standardError, d.degreesOfFreedom);
 }
 
 } // namespace stipple::testing

@@ -5,8 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include <boost/math/distributions/students_t.hpp>
-
 namespace stipple::validation {
 
 double mean(const std::vector<double>& values) {
@@ -28,12 +26,6 @@ double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     size_t n = values.size();
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-double studentTQuantile(double p, double dof) {
-    if (!(dof > 0)) throw std::invalid_argument("studentTQuantile: degrees of freedom must be > 0");
-    boost::math::students_t dist(dof);
-    return boost::math::quantile(dist, p);
 }
 
 Interval meanInterval(const std::vector<double>& values, double confidence) {
@@ -61,13 +53,13 @@ Interval welchDifference(const SampleSummary& a, const SampleSummary& b, double 
         r.halfWidth = std::numeric_limits<double>::quiet_NaN();
         return r;
     }
-    const double va = a.variance / double(a.count), vb = b.variance / double(b.count), se2 = va + vb;
-    if (!(se2 > 0)) { // both samples constant: the difference is exact
+    const statistics::WelchDifference welch = statistics::welchDifference(
+        {a.mean, a.variance / double(a.count), double(a.count)}, {b.mean, b.variance / double(b.count), double(b.count)});
+    if (!(welch.standardError > 0)) { // both samples constant: the difference is exact
         r.halfWidth = 0;
         return r;
     }
-    const double dof = se2 * se2 / (va * va / double(a.count - 1) + vb * vb / double(b.count - 1));
-    r.halfWidth = studentTQuantile(0.5 + 0.5 * confidence, dof) * std::sqrt(se2);
+    r.halfWidth = studentTQuantile(0.5 + 0.5 * confidence, welch.degreesOfFreedom) * welch.standardError;
     return r;
 }
 

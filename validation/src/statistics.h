@@ -1,6 +1,9 @@
 // Small statistics used by the validation report: means, Student-t intervals, medians and the
-// least-squares slope of log RMS against log spp with its interval.
+// least-squares slope of log RMS against log spp with its interval. Student's t and Welch's degrees of freedom
+// come from statistics/ (<stipple/statistics/student_t.h>).
 #pragma once
+
+#include <stipple/statistics/student_t.h>
 
 #include <cstddef>
 #include <vector>
@@ -21,8 +24,8 @@ double mean(const std::vector<double>& values);
 double sampleVariance(const std::vector<double>& values);
 double median(std::vector<double> values);
 
-// Quantile of Student's t with `dof` degrees of freedom (e.g. 0.975 for a two-sided 95% interval).
-double studentTQuantile(double p, double dof);
+// Quantile of Student's t (statistics/: the project's one Student-t and Welch).
+using statistics::studentTQuantile;
 
 // Mean with the t-distribution interval at the given confidence (0.95: two-sided 95%).
 Interval meanInterval(const std::vector<double>& values, double confidence = 0.95);

@@ -2,7 +2,8 @@
 // through the user's OpenColorIO config ($OCIO: its scene_linear role to its default display and view) when one
 // is set, else OIIO's built-in linear -> sRGB. Both are written to a temporary file beside the target and renamed
 // into place, so a failed run never destroys a good image.
-#include <stipple/render/renderer.h>
+#include <stipple/render/image_io.h>
+#include <stipple/render/renderer_identity.h>
 #include <stipple/render/temp_files.h>
 
 #include <OpenImageIO/color.h>

@@ -4,7 +4,7 @@
 // old PNG; when writing fails both temporaries are removed and the old pair stays.
 #pragma once
 
-#include <stipple/render/renderer.h>
+#include <stipple/render/image_io.h>
 
 #include <string>
 #include <utility>

@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace stipple::render {
 
@@ -44,5 +45,7 @@ public:
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const RenderScene& scene, const Camera& camera,
                                            const IntegratorSettings& settings);
 std::string knownIntegrators();
+// The names makeIntegrator accepts (the debug variants aside), in the registry's order.
+std::vector<std::string> registeredIntegrators();
 
 } // namespace stipple::render

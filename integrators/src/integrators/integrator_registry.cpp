@@ -1,7 +1,5 @@
 #include "integrators/integrator_registry.h"
 
-#include <stipple/render/renderer.h>
-
 #include <stdexcept>
 
 namespace stipple::render {
@@ -34,7 +32,7 @@ bool isBdptVariant(const std::string& name) { return name.rfind("bdpt:", 0) == 0
 
 } // namespace
 
-std::vector<std::string> integratorNames() {
+std::vector<std::string> registeredIntegrators() {
     std::vector<std::string> names;
     for (const Entry& e : kIntegrators) names.push_back(e.name);
     return names;

@@ -1,9 +1,9 @@
 #include "scene/scene_loader.h"
 
-#include "scene/input_limits.h"
+#include "scene/scene_extent.h"
 #include "scene/shape_builders.h"
 #include <stipple/render/input_limits.h>
-#include <stipple/render/renderer.h>
+#include <stipple/render/scene_error.h>
 
 #include <stipple/yaml/strict_yaml.h>
 

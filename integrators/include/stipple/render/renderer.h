@@ -1,27 +1,19 @@
 // The renderer library's public C++ API: what stipple-render and stipple-validate use.
-// Contract between integrators/ (implements it) and validation/ (drives it in-process).
+// Contract between integrators/ (implements it) and validation/ (drives it in-process). Its vocabulary (Image,
+// SceneError, image I/O, the renderer's identity) lives in headers of its own, below the renderer's layers.
 #pragma once
+
+#include <stipple/render/image.h>
+#include <stipple/render/image_io.h>
+#include <stipple/render/renderer_identity.h>
+#include <stipple/render/scene_error.h>
 
 #include <cstdint>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace stipple::render {
-
-// A scene file that cannot be loaded: the message names file:line:column, the key and what was expected.
-class SceneError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-// "stipple-render <project version>": what results and image metadata name as their Software.
-const char* rendererVersion();
-// Short hash of the renderer library's own sources (generated at build time): changes whenever its code does.
-const char* rendererSourceHash();
-// rendererVersion() plus rendererSourceHash(): the renderer's part of every reference-cache key.
-std::string rendererIdentity();
 
 // The sample patterns the shim that RenderOptions::shim = shimPath selects serves (their one owner), in id
 // order. Loads the library if needed; throws std::runtime_error when none loads.
@@ -34,15 +26,6 @@ std::vector<std::string> integratorNames();
 // the file's bytes, so a reference cache notices a rebuilt shim. Loads the library if needed; throws
 // std::runtime_error, as a render would, when none loads.
 std::string shimIdentity(const std::string& shimPath);
-
-// Scene-linear Rec.709 RGB image, row-major, top row first, 3 floats per pixel.
-struct Image {
-    int width = 0;
-    int height = 0;
-    std::vector<float> rgb;
-    float* pixel(int x, int y) { return rgb.data() + 3 * (size_t(y) * width + x); }
-    const float* pixel(int x, int y) const { return rgb.data() + 3 * (size_t(y) * width + x); }
-};
 
 // Everything a render can be told; zero / empty means "the scene's default".
 struct RenderOptions {
@@ -102,22 +85,5 @@ public:
 // Parses a scene file and checks it as Scene::load does, without building anything to render it: the cheap
 // "will this load" of a run's preflight. Throws SceneError like Scene::load.
 void checkSceneFile(const std::string& path);
-
-// EXR metadata: bare snake_case keys (scene, content_hash, integrator, pattern, spp, seed, max_depth,
-// renderer, reference_key, render_seconds, ...), stored as "stipple:<key>". One vocabulary for every writer.
-using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
-inline constexpr const char* kMetadataPrefix = "stipple:";
-
-// Writes a float EXR (scene-linear Rec.709) via a temporary file renamed into place, with the standard
-// attributes Software (rendererVersion()), chromaticities and oiio:ColorSpace, and each metadata key under
-// kMetadataPrefix. Throws std::invalid_argument for a key that is empty or already has a prefix.
-void writeExr(const std::string& path, const Image& image, const ImageMetadata& metadata);
-// The kMetadataPrefix attributes of an EXR, prefix removed, as strings.
-ImageMetadata readExrMetadata(const std::string& path);
-// Writes an sRGB PNG preview, exposure in stops: through $OCIO's default display and view when $OCIO is set,
-// else OIIO's built-in linear -> sRGB.
-void writePng(const std::string& path, const Image& image, float exposureStops = 0.0f);
-// Reads an EXR written by writeExr (or any RGB image OIIO reads).
-Image readImage(const std::string& path);
 
 } // namespace stipple::render

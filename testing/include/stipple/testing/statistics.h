@@ -1,5 +1,6 @@
 // The statistics the project's tests decide with: Pearson's chi-square with pooling of sparse cells, Sidak's
-// per-test level, Student's and Welch's t-tests. Distributions come from Boost.Math.
+// per-test level, Student's and Welch's t-tests (in the words the tests use; Student's t and Welch's degrees of
+// freedom are statistics/'s, <stipple/statistics/student_t.h>). Distributions come from Boost.Math.
 #pragma once
 
 #include <vector>

@@ -1,7 +1,7 @@
-#include "scene/input_limits.h"
+#include "scene/scene_extent.h"
 
 #include <stipple/render/input_limits.h>
-#include <stipple/render/renderer.h>
+#include <stipple/render/scene_error.h>
 
 #include <cmath>
 #include <sstream>
