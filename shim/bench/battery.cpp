@@ -399,7 +399,9 @@ void summariseBattery(const Options& opt, const BatteryResult& res, Summary& out
 // ---- nested uniformity -------------------------------------------------------------------------------------------
 
 std::string runNested(const Options& opt) {
-    const std::vector<std::string> patterns = {"independent", "stratified", "sobol", "pmj02"};
+    std::vector<std::string> patterns;
+    for (const char* p : {"independent", "stratified", "sobol", "pmj02"})
+        if (std::find(opt.patterns.begin(), opt.patterns.end(), p) != opt.patterns.end()) patterns.push_back(p);
     std::vector<uint32_t> ns;
     for (uint32_t N = 16; N <= (opt.quick ? 4096u : 65536u); N *= 4) ns.push_back(N);
     const int R = opt.sets;
@@ -434,7 +436,8 @@ std::string runNested(const Options& opt) {
                 for (uint32_t c = 0; c < arity; ++c) {
                     double sum = 0;
                     for (uint32_t k = 0; k < N; ++k) {
-                        const double u = double(pts[size_t(k) * arity + c]) * N;
+                        // The centre of the float's 2^-24 cell: its corner would bias frac by 2^-25 N.
+                        const double u = (double(pts[size_t(k) * arity + c]) + 0x1p-25) * N;
                         sum += u - std::floor(u);
                     }
                     const double m = sum / N - 0.5;
