@@ -86,7 +86,7 @@ void Sampler::fill(const SetRef& set, const Dimension& dim, uint32_t first, uint
     case STIPPLE_PATTERN_STRATIFIED: return fillStratified(blockKey(key, set.block), dim, first, count, out);
     case STIPPLE_PATTERN_POISSON: return fillPoisson(blockKey(key, set.block), dim, first, count, out);
     case STIPPLE_PATTERN_SOBOL: return fillSobol(SobolSet::perPixel(key).atBlock(set.block), dim, first, count, out);
-    case STIPPLE_PATTERN_PMJ02: return fillPmj02(blockKey(key, set.block), dim, first, count, out);
+    case STIPPLE_PATTERN_PMJ02: return fillPmj02(key, set.block, dim, first, count, out);
     default: return fillPoissonSeed(blockKey(key, set.block), dim, first, count, out);
     }
 }
@@ -100,7 +100,7 @@ void Sampler::point(const SetRef& set, const Dimension& dim, uint32_t p, float* 
     case STIPPLE_PATTERN_STRATIFIED: return pointStratified(blockKey(key, set.block), dim, p, out);
     case STIPPLE_PATTERN_POISSON: return pointPoisson(blockKey(key, set.block), dim, p, out);
     case STIPPLE_PATTERN_SOBOL: return pointSobol(SobolSet::perPixel(key).atBlock(set.block), dim, p, out);
-    case STIPPLE_PATTERN_PMJ02: return pointPmj02(blockKey(key, set.block), dim, p, out);
+    case STIPPLE_PATTERN_PMJ02: return pointPmj02(key, set.block, dim, p, out);
     default: return pointPoissonSeed(blockKey(key, set.block), dim, p, out);
     }
 }
@@ -133,7 +133,7 @@ void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t fi
         if (pattern_ == STIPPLE_PATTERN_POISSON)
             fillPoisson(key, dim, first, count, out);
         else if (pattern_ == STIPPLE_PATTERN_PMJ02)
-            fillPmj02(key, dim, first, count, out);
+            fillPmj02(tileKey, set.block, dim, first, count, out);
         else
             fillPoissonSeed(key, dim, first, count, out);
         float shift[3];
