@@ -52,6 +52,11 @@ struct Pmj02Set {
     }
 };
 
+// Owen scrambling of a coordinate the family stores bit-reversed: nestedUniformScramble of the coordinate.
+inline uint32_t reversedScramble(uint32_t reversed, uint32_t seed) {
+    return reverseBits32(laineKarrasPermutation(reversed, seed));
+}
+
 // Keeps octaves in place, Owen-scrambles the order inside each (branch-free: octave 0 holds indices 0 and 1).
 inline uint32_t octaveShuffle(uint32_t i, uint32_t seed) {
     const uint32_t octave = i < 2 ? 0u : 0x80000000u >> std::countl_zero(i);
@@ -62,12 +67,12 @@ inline uint32_t octaveShuffle(uint32_t i, uint32_t seed) {
 inline void pmj02Point(const Pmj02Set& set, uint32_t arity, uint32_t r, float* out) {
     const uint32_t t = set.offset + r;
     const FixedPoint2& xy = set.xy[octaveShuffle(t, set.indexSeed)];
-    out[0] = fixedToUnitFloat(nestedUniformScramble(xy.x, set.scramble[0]));
+    out[0] = fixedToUnitFloat(reversedScramble(xy.x, set.scramble[0]));
     if (arity == 1) return;
-    out[1] = fixedToUnitFloat(nestedUniformScramble(xy.y, set.scramble[1]));
+    out[1] = fixedToUnitFloat(reversedScramble(xy.y, set.scramble[1]));
     if (arity == 2) return;
     const FixedPoint2& z = set.z[octaveShuffle(t, set.zIndexSeed)];
-    out[2] = fixedToUnitFloat(nestedUniformScramble(z.x, set.scramble[2]));
+    out[2] = fixedToUnitFloat(reversedScramble(z.x, set.scramble[2]));
 }
 
 // The batch with wide vectors: the same values as pmj02Point, a chunk of points at a time in loops the compiler
@@ -86,15 +91,15 @@ template <uint32_t Arity>
         if constexpr (Arity >= 2)
             for (uint32_t i = 0; i < n; ++i) b[i] = table[2 * size_t(index[i]) + 1];
         float* o = out + size_t(base) * Arity;
-        for (uint32_t i = 0; i < n; ++i) o[size_t(i) * Arity] = fixedToUnitFloat(nestedUniformScramble(a[i], set.scramble[0]));
+        for (uint32_t i = 0; i < n; ++i) o[size_t(i) * Arity] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[0]));
         if constexpr (Arity >= 2)
             for (uint32_t i = 0; i < n; ++i)
-                o[size_t(i) * Arity + 1] = fixedToUnitFloat(nestedUniformScramble(b[i], set.scramble[1]));
+                o[size_t(i) * Arity + 1] = fixedToUnitFloat(reversedScramble(b[i], set.scramble[1]));
         if constexpr (Arity == 3) {
             for (uint32_t i = 0; i < n; ++i) index[i] = octaveShuffle(t0 + i, set.zIndexSeed);
             for (uint32_t i = 0; i < n; ++i) a[i] = zTable[2 * size_t(index[i])];
             for (uint32_t i = 0; i < n; ++i)
-                o[size_t(i) * Arity + 2] = fixedToUnitFloat(nestedUniformScramble(a[i], set.scramble[2]));
+                o[size_t(i) * Arity + 2] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[2]));
         }
     }
 }

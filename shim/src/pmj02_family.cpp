@@ -2,6 +2,7 @@
 #include "pmj02_family.h"
 
 #include "hash.h"
+#include "owen_scrambling.h"
 
 #include <algorithm>
 #include <map>
@@ -28,6 +29,7 @@ const FixedPoint2* Pmj02Family::sequence(uint32_t j) const {
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_relaxed)) return data;
     slot.points =
         generatePmj02(storedLog2Length_, hashCombine(hashCombine(mix64(kPmj02FamilyDomain), storedLog2Length_), j));
+    for (FixedPoint2& p : slot.points) p = {reverseBits32(p.x), reverseBits32(p.y)}; // the order the scramble takes
     slot.ready.store(slot.points.data(), std::memory_order_release);
     return slot.points.data();
 }

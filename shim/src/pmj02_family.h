@@ -32,6 +32,7 @@ public:
     uint32_t log2Length() const { return log2Length_; }
     uint32_t storedLog2Length() const { return storedLog2Length_; }
     uint32_t setCount() const { return setCount_; }
+    // Sequence j with each coordinate's bits reversed (the digit order the Laine-Karras scramble takes).
     const FixedPoint2* sequence(uint32_t j) const;
 
     // The shared family for this length (created on first request).
