@@ -60,18 +60,6 @@ struct TorusMap : PoissonKernelArgs {
         }
     }
 
-    // 1D "poisson" (pointsets::cellSet1D): the stored points sit at sub-cell centres (c m + sigma + 1/2) / (n m),
-    // so the shift is a whole number k of cells plus a common offset u inside the sub-cell, (k m + u - 1/2) / (n m):
-    // every point stays in one cell of the domain's own grid (the domain's ends are cell boundaries, no seam), a
-    // reflection maps sub-cell centres to sub-cell centres, and with k uniform over the n cells and u over [0,1)
-    // every point is uniform on [0,1) (sigma is balanced over the sub-cells).
-    void alignToCells(uint64_t key, uint32_t points, uint32_t subdivision) {
-        const uint64_t h = hashAt(key, 3);
-        const uint64_t cell = ((h >> 32) * points) >> 32;
-        const double u = double((h >> 11) & 0x1fffffu) * 0x1p-21;
-        shift[0] = float((double(cell) * subdivision + u - 0.5) / (double(points) * subdivision));
-    }
-
     // s + x or s - x, wrapped into [0,1) by wrapUnit.
     template <uint32_t Arity>
     void apply(const float* stored, float* out) const {
@@ -201,16 +189,9 @@ void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint3
 }
 
 // The map built for a known arity: only its axes are computed (the others keep their unused defaults).
-// The map of a "poisson" set: a torus symmetry and shift; in 1D the shift by whole cells (TorusMap::alignToCells).
-TorusMap poissonMap(uint64_t key, const Dimension& dim, uint32_t arity) {
-    TorusMap map(key, arity, true);
-    if (arity == 1) map.alignToCells(key, dim.setSize, std::max(1u, dim.poisson->cellSubdivision()));
-    return map;
-}
-
 template <uint32_t Arity>
 void fillPoissonOf(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    const TorusMap map = poissonMap(key, dim, Arity);
+    const TorusMap map(key, Arity, true);
     serveBatch<Arity>(map, cachedSet(key, dim), dim.setSize, first, count, out);
 }
 
@@ -223,7 +204,7 @@ void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t co
 }
 
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
-    const TorusMap map = poissonMap(key, dim, dim.arity);
+    const TorusMap map(key, dim.arity, true);
     map.apply(cachedSet(key, dim) + size_t(layeredIndex(p, dim.setSize, map.orderSeed)) * dim.arity, dim.arity, out);
 }
 

@@ -12,8 +12,7 @@
 namespace stipple {
 
 PoissonFamily::PoissonFamily(uint32_t arity, uint32_t points, uint32_t setCount)
-    : arity_(arity), points_(points), setCount_(setCount),
-      cellSubdivision_(arity == 1 ? pointsets::cellSubdivision1D(points) : 0), slots_(new Slot[setCount]) {}
+    : arity_(arity), points_(points), setCount_(setCount), slots_(new Slot[setCount]) {}
 
 uint64_t PoissonFamily::setSeed(uint32_t arity, uint32_t points, uint32_t j) {
     uint64_t key = mix64(static_cast<uint64_t>(HashDomain::PoissonCache));

@@ -28,8 +28,6 @@ public:
     uint32_t arity() const { return arity_; }
     uint32_t points() const { return points_; }
     uint32_t setCount() const { return setCount_; }
-    // Sub-cells per cell of a 1D set (pointsets::cellSubdivision1D); 0 for other arities.
-    uint32_t cellSubdivision() const { return cellSubdivision_; }
     size_t byteCapacity() const { return size_t(setCount_) * points_ * arity_ * sizeof(float); }
 
     // Set j (0 <= j < setCount), M*arity floats in [0,1). Generates it on first use; safe from any thread. The
@@ -50,7 +48,7 @@ private:
         std::atomic<const float*> ready{nullptr};
         std::vector<float> points;
     };
-    uint32_t arity_, points_, setCount_, cellSubdivision_;
+    uint32_t arity_, points_, setCount_;
     std::unique_ptr<Slot[]> slots_;
 };
 
