@@ -78,13 +78,17 @@ struct TorusMap : PoissonKernelArgs {
     }
     float cellRotation = 0.0f, cellCount = 0.0f, cellWidth = 0.0f; // cellCount 0: no cells (arity > 1, poisson-seed)
 
-    // The second step of alignToCells' map, in place on served 1D values (a loop the compiler vectorises).
+    // The second step of alignToCells' map, in place on served 1D values. Branch-free (the move is a coin flip per
+    // value) and without std::floor (a libm call on the baseline ISA): y >= 0, so truncation is the floor.
     void rotateInsideCells(float* values, uint32_t count) const {
         if (cellCount == 0.0f) return;
+        const float n = cellCount, width = cellWidth, rotation = cellRotation;
         for (uint32_t i = 0; i < count; ++i) {
-            const float y = values[i] * cellCount;
-            const float v = values[i] - (y - std::floor(y) < cellRotation ? cellWidth : 0.0f);
-            values[i] = v < 0.0f ? (v + 1.0f < 1.0f ? v + 1.0f : 0.0f) : v;
+            const float y = values[i] * n;
+            const float offset = y - static_cast<float>(static_cast<int32_t>(y));
+            float v = values[i] - (offset < rotation ? width : 0.0f);
+            v += v < 0.0f ? 1.0f : 0.0f;
+            values[i] = v < 1.0f ? v : 0.0f;
         }
     }
 
