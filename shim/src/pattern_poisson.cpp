@@ -3,7 +3,8 @@
 // A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections) and
 // a Cranley-Patterson shift, hashed from the set key. These maps are isometries of the torus, so they keep the
 // set's minimum distance (rho); the shift makes every sample uniformly distributed over [0,1)^arity whatever the
-// stored set is.
+// stored set is. 1D sets are not toroidal: they are shifted by whole cells and rotated inside their cells
+// (TorusMap::alignToCells), so the domain's ends stay cell boundaries.
 // Order: "poisson" serves the stored order (made progressive by the cache, progressive_order.h) shuffled only
 // within each layer [2^j, 2^(j+1)) (layeredIndex). Every prefix of 2^j points is thus
 // exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
