@@ -3,7 +3,8 @@
 // A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections) and
 // a Cranley-Patterson shift, hashed from the set key. These maps are isometries of the torus, so they keep the
 // set's minimum distance (rho); the shift makes every sample uniformly distributed over [0,1)^arity whatever the
-// stored set is.
+// stored set is. 1D sets are not toroidal: they are shifted by whole cells and rotated inside their cells
+// (TorusMap::alignToCells), so the domain's ends stay cell boundaries.
 // Order: "poisson" serves the stored order (made progressive by the cache, progressive_order.h) shuffled only
 // within each layer [2^j, 2^(j+1)) (layeredIndex). Every prefix of 2^j points is thus
 // exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,37 @@ struct TorusMap : PoissonKernelArgs {
             source[c] = kAxisOrders[axisOrder][c];
             // The sign bit set from the hash bit, not a branch (a coin flip per call, mispredicted half the time).
             sign[c] = std::bit_cast<float>(0x3f800000u | (static_cast<uint32_t>(symmetry >> (32 + c)) & 1u) << 31);
+        }
+    }
+
+    // 1D "poisson" (pointsets::cellSet1D) keeps one point in each cell [c/n, (c+1)/n) of the domain: the served point
+    // is (c + k + frac(o + tau)) / n for a stored point (c + o) / n, k a whole number of cells and tau a rotation of
+    // the offsets inside their cells, both common to the set. The domain's ends stay cell boundaries (a
+    // non-periodic integrand sees no seam); k uniform over the cells and tau over [0,1) make every point uniform on
+    // [0,1); and the rotation keeps the set's structure, since the offsets' steps from cell to cell are only changed
+    // by whole turns (cellSet1D's steps are all -beta modulo 1). As a torus shift by (k + tau) / n followed by
+    // rotateInsideCells: a shifted point whose offset is now below tau crossed into the next cell and goes back.
+    void alignToCells(uint64_t key, uint32_t points) {
+        const uint64_t h = hashAt(key, 3);
+        const uint64_t cell = ((h >> 32) * points) >> 32;
+        cellRotation = float((h >> 11) & 0x1fffffu) * 0x1p-21f;
+        cellCount = float(points);
+        cellWidth = float(1.0 / points);
+        shift[0] = float((double(cell) + cellRotation) / points);
+    }
+    float cellRotation = 0.0f, cellCount = 0.0f, cellWidth = 0.0f; // cellCount 0: no cells (arity > 1, poisson-seed)
+
+    // The second step of alignToCells' map, in place on served 1D values. Branch-free (the move is a coin flip per
+    // value) and without std::floor (a libm call on the baseline ISA): y >= 0, so truncation is the floor.
+    void rotateInsideCells(float* values, uint32_t count) const {
+        if (cellCount == 0.0f) return;
+        const float n = cellCount, width = cellWidth, rotation = cellRotation;
+        for (uint32_t i = 0; i < count; ++i) {
+            const float y = values[i] * n;
+            const float offset = y - static_cast<float>(static_cast<int32_t>(y));
+            float v = values[i] - (offset < rotation ? width : 0.0f);
+            v += v < 0.0f ? 1.0f : 0.0f;
+            values[i] = v < 1.0f ? v : 0.0f;
         }
     }
 
@@ -187,10 +220,18 @@ void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint3
 }
 
 // The map built for a known arity: only its axes are computed (the others keep their unused defaults).
+// The map of a "poisson" set: a torus symmetry and shift; in 1D the shift by whole cells (TorusMap::alignToCells).
+TorusMap poissonMap(uint64_t key, const Dimension& dim, uint32_t arity) {
+    TorusMap map(key, arity, true);
+    if (arity == 1) map.alignToCells(key, dim.setSize);
+    return map;
+}
+
 template <BatchIsa Isa, uint32_t Arity>
 void fillPoissonOf(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    const TorusMap map(key, Arity, true);
+    const TorusMap map = poissonMap(key, dim, Arity);
     serveBatch<Isa, Arity>(map, cachedSet(key, dim), dim.setSize, first, count, out);
+    if constexpr (Arity == 1) map.rotateInsideCells(out, count);
 }
 
 template <BatchIsa Isa>
@@ -203,8 +244,9 @@ void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t co
 }
 
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
-    const TorusMap map(key, dim.arity, true);
+    const TorusMap map = poissonMap(key, dim, dim.arity);
     map.apply(cachedSet(key, dim) + size_t(layeredIndex(p, dim.setSize, map.orderSeed)) * dim.arity, dim.arity, out);
+    if (dim.arity == 1) map.rotateInsideCells(out, 1);
 }
 
 void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {

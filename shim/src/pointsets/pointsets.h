@@ -18,6 +18,12 @@ inline constexpr uint32_t kMaxPoints = 1u << 22;
 // point per 1/n) and the lowest Fourier modes cancelled, from a jittered start and relaxation; order shuffled.
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
 
+// 1D sets: one point in each cell [c/n, (c+1)/n), at the centre of one of the cell's m sub-cells, every sub-cell
+// index used by n/m cells: m = the largest divisor of n with n * m <= 2^23 (m = n for 8 <= n <= 2896), or 1 if
+// that is below 8 (the set is then the equidistant lattice, rho = 1). The serving (pattern_poisson.cpp) relies on this
+// layout.
+uint32_t cellSubdivision1D(uint32_t n);
+
 // The study's Algorithm 1: dart throwing with r0 = N^(-1/dim), r <- 0.75 r after TRY_LIMIT = 100
 // consecutive failures, neighbour search in an ordered set (1D), quadtree (2D) or octree (3D).
 // Points in the order they were accepted.
