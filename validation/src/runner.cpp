@@ -189,7 +189,16 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
     const int threads = opt.threads ? opt.threads : m.threads;
     const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
 
-    Progress progress(opt.referencesOnly ? 0 : groups.size() * m.patterns.size());
+    // Work in spp: every cell × seed, and every scene's reference (taken off again when it comes from the cache).
+    double work = 0;
+    std::vector<bool> sceneRuns(m.scenes.size(), false);
+    for (const auto& g : groups) {
+        if (!opt.referencesOnly) work += double(g.spp) * double(m.patterns.size());
+        sceneRuns[g.scene] = true;
+    }
+    for (size_t si = 0; si < m.scenes.size(); ++si)
+        if (sceneRuns[si]) work += m.scenes[si].referenceSpp ? m.scenes[si].referenceSpp : m.reference.spp;
+    Progress progress(opt.referencesOnly ? 0 : groups.size() * m.patterns.size(), work);
     std::vector<std::optional<SceneFingerprint>> fingerprinted(m.scenes.size());
     for (size_t si = 0; si < m.scenes.size(); ++si) {
         const MatrixScene& ms = m.scenes[si];
@@ -216,7 +225,10 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d (key %s)", ms.name.c_str(),
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
                               base.width, base.height, referenceKey(*scene, refOptions).c_str()));
+            progress.resume();
+            progress.beginTask("reference for " + ms.name, refOptions.spp);
             Reference ref = loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir);
+            progress.endTask(!ref.fromCache);
             if (!ref.cacheProblem.empty())
                 progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem +
                               "): rendered again");
@@ -264,12 +276,14 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
                                       pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
                                       row.renderSeconds, row.samplerSeconds,
-                                      row.floorLimited ? ", floor-limited" : ""));
+                                      row.floorLimited ? ", floor-limited" : ""),
+                                  g.spp);
                 }
             }
             writeRegionErrorMaps(opt.reportDir, ms, ref.image, cropRenders);
             results.scenes.push_back(info);
         } catch (const std::exception& e) {
+            progress.endTask(false);
             progress.resume();
             // std::bad_alloc's own text names an internal type: say what it means.
             const bool oom = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
