@@ -49,23 +49,6 @@ std::vector<EfficiencyRanking> rankingsOf(const ReportInputs& in, const MatrixSc
     return out;
 }
 
-// "stratified is the most efficient at equal time, 1.9× poisson (95% 1.6-2.3)" or "... not separated from ...".
-std::string sentence(const EfficiencyRanking& r) {
-    if (r.ranked.empty()) return "no cells";
-    if (r.ranked.size() == 1) return r.ranked[0].pattern + " alone";
-    const auto& st = r.steps[0];
-    std::string s = st.separated
-                        ? fmt("%s is the most efficient at equal time, %.2f× %s (95%% %.2f-%.2f)",
-                              r.ranked[0].pattern.c_str(), st.ratio, r.ranked[1].pattern.c_str(), st.lo, st.hi)
-                        : fmt("%s and %s lead, not separated (%.2f×, 95%% %.2f-%.2f)", r.ranked[0].pattern.c_str(),
-                              r.ranked[1].pattern.c_str(), st.ratio, st.lo, st.hi);
-    double lo = 0, hi = 0;
-    const auto& last = r.ranked.back();
-    const double worst = r.ratioOf(r.ranked[0].pattern, last.pattern, &lo, &hi);
-    if (r.ranked.size() > 2) s += fmt("; %.3g× %s (95%% %.3g-%.3g)", worst, last.pattern.c_str(), lo, hi);
-    return s;
-}
-
 // Mean FLIP ± 95% and the geometric mean of the error spectrum's high/low ratio over the seeds of a cell;
 // region < 0: the whole image.
 struct Perceptual {
@@ -89,13 +72,6 @@ Perceptual perceptualOf(const std::vector<ResultRow>& rows, const std::string& s
     p.flip = meanInterval(flip);
     if (!logSpectrum.empty()) p.spectrum = std::exp(mean(logSpectrum));
     return p;
-}
-
-std::string studyOf(const Matrix& m, const std::string& scene) {
-    for (const auto& k : m.checks)
-        if (k.type == CheckType::EqualTime && (k.scene == scene || k.scene == "all") && !k.study.empty())
-            return k.study;
-    return "";
 }
 
 } // namespace
