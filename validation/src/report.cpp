@@ -93,9 +93,19 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
         }
         writeTextFile((fs::path(dir) / "plots" / (base + ".dat")).string(), dat.str());
         const double pad = std::pow(10.0, 1.0 / 6);
+        // The range and labelled tics at 1, 2 and 5 × 10^k inside it (a log axis labels only decades otherwise, and
+        // a fitted range may hold one or none).
         auto range = [&](const char* axis, double lo, double hi) {
-            return std::isfinite(lo) && hi > 0 ? fmt("set %srange [%.6g:%.6g]\n", axis, lo / pad, hi * pad)
-                                               : std::string();
+            if (!(std::isfinite(lo) && lo > 0 && hi > 0)) return std::string();
+            lo /= pad;
+            hi *= pad;
+            std::string tics;
+            for (int k = int(std::floor(std::log10(lo))); k <= int(std::ceil(std::log10(hi))); ++k)
+                for (double mant : {1.0, 2.0, 5.0})
+                    if (const double v = mant * std::pow(10.0, k); v >= lo && v <= hi)
+                        tics += (tics.empty() ? "" : ", ") + fmt("%g", v);
+            return fmt("set %srange [%.6g:%.6g]\n", axis, lo, hi) +
+                   (tics.empty() ? std::string() : fmt("set %stics (%s)\n", axis, tics.c_str()));
         };
 
         auto plotCommand = [&](bool bySeconds) {
@@ -112,24 +122,24 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
         for (int kind = 0; kind < 2; ++kind) {
             const bool bySeconds = kind == 1;
             const std::string stem = base + (bySeconds ? "-rms-seconds" : "-rms-spp");
-            std::string common = "set logscale xy\nset grid\nset key outside right top vertical noenhanced\n"
+            std::string common = "set logscale xy\nset grid\nset key below horizontal noenhanced samplen 2 width 1\n"
                                  "set format y '%g'\nset format x '%g'\n"
                                  "set ylabel 'RMS (eq. 1, reference floor removed)'\n";
             common += bySeconds ? "set xlabel 'median CPU seconds, as in the verdicts'\n"
                                 : "set xlabel 'samples per pixel'\n";
+            common += bySeconds ? range("x", tMin, tMax) : range("x", xMin, xMax);
             if (!bySeconds) {
                 std::string tics;
                 for (uint32_t spp : m.spp) tics += (tics.empty() ? "" : ", ") + std::to_string(spp);
                 common += "set xtics (" + tics + ")\n";
             }
-            common += bySeconds ? range("x", tMin, tMax) : range("x", xMin, xMax);
             common += range("y", yMin, yMax);
             common +=
                 "set title " + gq(scene.name + (bySeconds ? ": RMS vs CPU time" : ": RMS vs spp")) + " noenhanced\n";
             script += "reset\n" + common;
-            script += "set terminal pngcairo size 640,400 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
+            script += "set terminal pngcairo size 640,440 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
                       plotCommand(bySeconds);
-            script += "set terminal svg size 640,400 enhanced\nset output " + gq(stem + ".svg") + "\n" +
+            script += "set terminal svg size 640,440 enhanced\nset output " + gq(stem + ".svg") + "\n" +
                       plotCommand(bySeconds) + "unset output\n";
         }
     }
