@@ -310,7 +310,7 @@ std::string slopesTableHtml(const ReportInputs& in) {
     std::ostringstream o;
     o << "<h2>Slopes of log RMS vs log spp</h2>\n<p class=\"note\">Least squares over per-seed points; 95% interval "
          "on the slope. Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) in "
-         "2D, less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
+         "2D, less in a full renderer's many dimensions.</p>\n<div class=\"wide\"><table><tr><th>scene</th>";
     for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
     for (const auto& scene : m.scenes) {
@@ -324,14 +324,14 @@ std::string slopesTableHtml(const ReportInputs& in) {
         }
         o << "</tr>\n";
     }
-    o << "</table>\n";
+    o << "</table></div>\n";
     return o.str();
 }
 
 // Per scene: load and BVH times, the reference's spp, time, floor and cache key.
 std::string scenesTableHtml(const Results& r) {
     std::ostringstream o;
-    o << "<details><summary>Scenes: load, BVH build, references</summary><table><tr><th>scene</th><th>file</th>"
+    o << "<details><summary>Scenes: load, BVH build, references</summary><div class=\"wide\"><table><tr><th>scene</th><th>file</th>"
          "<th>size</th><th>load s</th><th>BVH s</th><th>warm-up s</th><th>ref. spp</th><th>ref. s</th>"
          "<th>floor (MSE)</th><th>reference key</th></tr>\n";
     for (const auto& s : r.scenes)
@@ -341,7 +341,7 @@ std::string scenesTableHtml(const Results& r) {
                  s.buildSeconds, s.warmupSeconds, s.referenceSpp,
                  s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached", s.noiseFloor)
           << "<td>" << html(s.referenceKey) << "</td></tr>\n";
-    o << "</table></details>\n";
+    o << "</table></div></details>\n";
     return o.str();
 }
 
