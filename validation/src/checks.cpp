@@ -1,6 +1,7 @@
 #include "checks.h"
 #include "text.h"
 
+#include "comparison_claims.h"
 #include "efficiency_claims.h"
 #include "timing.h"
 
@@ -151,8 +152,10 @@ std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector
         case CheckType::TimeCeiling: timeCeiling(k, matrix, rows, o); break;
         case CheckType::EqualTime:
         case CheckType::EqualSpp: evaluateEqualTime(k, matrix, rows, o); break;
+        case CheckType::Compare: evaluateCompare(k, matrix, rows, o); break;
         }
-        o.failsRun = o.status == CheckStatus::Fail || (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
+        o.failsRun = (o.status == CheckStatus::Fail && k.failFails) ||
+                     (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
         out.push_back(o);
     }
     return out;
@@ -160,7 +163,8 @@ std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector
 
 std::string formatOutcome(const CheckOutcome& o) {
     std::string s = fmt("%-13s %s   [%s]", checkStatusName(o.status), o.claim.c_str(), o.check.where.c_str());
-    if (o.status == CheckStatus::NotSeparated) s += o.failsRun ? " (fails the run)" : " (does not fail the run)";
+    if (o.status != CheckStatus::Pass && !o.failsRun) s += " (does not fail the run)";
+    if (o.status == CheckStatus::NotSeparated && o.failsRun) s += " (fails the run)";
     s += "\n";
     for (const auto& f : o.figures) s += "      " + f + "\n";
     return s;
@@ -189,6 +193,7 @@ const Fields<CheckOutcome>& outcomeFields() {
              for (const auto& f : o.figures) all += (all.empty() ? "" : "; ") + f;
              return csvField(all);
          }},
+        {"verdicts", [](const O& o) { return verdictsJson(o.verdicts); }, {}, {}},
     };
     return fields;
 }

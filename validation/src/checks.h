@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "equivalence.h"
 #include "matrix.h"
 #include "results.h"
 
@@ -12,12 +13,23 @@ namespace stipple::validation {
 enum class CheckStatus { Pass, Fail, NotSeparated };
 const char* checkStatusName(CheckStatus status); // "PASS", "FAIL", "NOT SEPARATED"
 
+// One comparison of a compare check: pattern A's error over pattern B's in one scene and region.
+struct VerdictRow {
+    std::string scene, region; // region empty: the whole image
+    std::string a, b;
+    uint32_t spp = 0;
+    bool equalTime = false, flip = false;
+    Comparison comparison;
+    CheckStatus status = CheckStatus::Pass; // against the check's expectation
+};
+
 struct CheckOutcome {
     Check check;
     CheckStatus status = CheckStatus::Pass;
     bool failsRun = false;            // FAIL, or NOT SEPARATED when the check says not_separated: fail
     std::string claim;                // one line: what was claimed
     std::vector<std::string> figures; // one line per cell / scene measured, marked when it is the culprit
+    std::vector<VerdictRow> verdicts; // compare checks: one per scene × region × pair
 };
 
 std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector<ResultRow>& rows,

@@ -23,7 +23,7 @@ struct Field {
     std::string name;
     std::function<Json(const Record&)> toJson;
     std::function<void(Record&, const Json&)> fromJson; // empty: written only
-    std::function<std::string(const Record&)> toCsv;
+    std::function<std::string(const Record&)> toCsv; // empty: results.json only (e.g. per-block lists)
     bool required = false; // reading fails when it is absent
 };
 
@@ -115,6 +115,14 @@ Field<Record> doublesField(std::string name, std::vector<double> Record::*member
     return f;
 }
 
+// The same, in results.json only: lists too long for a CSV cell (one number per block of the image).
+template <class Record>
+Field<Record> jsonOnlyDoublesField(std::string name, std::vector<double> Record::*member) {
+    Field<Record> f = doublesField<Record>(std::move(name), member);
+    f.toCsv = nullptr;
+    return f;
+}
+
 template <class Record>
 Json toJson(const Record& record, const Fields<Record>& fields) {
     Json j = Json::object();
@@ -148,14 +156,20 @@ Record fromJson(const Json& j, const Fields<Record>& fields, const std::string& 
 template <class Record>
 std::string csvHeader(const Fields<Record>& fields) {
     std::string line;
-    for (const auto& f : fields) line += (line.empty() ? "" : ",") + f.name;
+    for (const auto& f : fields)
+        if (f.toCsv) line += (line.empty() ? "" : ",") + f.name;
     return line + "\n";
 }
 
 template <class Record>
 std::string csvRow(const Record& record, const Fields<Record>& fields) {
     std::string line;
-    for (size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + fields[i].toCsv(record);
+    bool first = true;
+    for (const auto& f : fields)
+        if (f.toCsv) {
+            line += (first ? "" : ",") + f.toCsv(record);
+            first = false;
+        }
     return line + "\n";
 }
 

@@ -60,6 +60,93 @@ double noiseFloor(const Image& varianceOfMean) {
     return n ? sum / double(n) : 0.0;
 }
 
+namespace {
+// Viridis at nine stops (sRGB, 0-255), linearly interpolated.
+void viridis(double t, float* rgb) {
+    static const unsigned char stops[9][3] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},
+                                              {44, 113, 142}, {33, 144, 141}, {39, 173, 129},
+                                              {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
+    t = std::clamp(std::isfinite(t) ? t : 1.0, 0.0, 1.0) * 8;
+    const int i = std::min(int(t), 7);
+    const double f = t - i;
+    for (int c = 0; c < 3; ++c) {
+        const double srgb = ((1 - f) * stops[i][c] + f * stops[i + 1][c]) / 255.0;
+        // The PNG writer encodes linear values as sRGB: undo that here.
+        rgb[c] = float(srgb <= 0.04045 ? srgb / 12.92 : std::pow((srgb + 0.055) / 1.055, 2.4));
+    }
+}
+
+double pixelError(const Image& reference, const Image& image, int x, int y) {
+    const float* r = reference.pixel(x, y);
+    const float* p = image.pixel(x, y);
+    if (!finitePixel(r) || !finitePixel(p)) return INFINITY;
+    double sum = 0;
+    for (int c = 0; c < 3; ++c) sum += (double(r[c]) - double(p[c])) * (double(r[c]) - double(p[c]));
+    return std::sqrt(sum);
+}
+} // namespace
+
+Image errorMap(const Image& reference, const Image& image, int x, int y, int w, int h, double scale, int magnify) {
+    Image map;
+    map.width = w;
+    map.height = h;
+    map.rgb.resize(size_t(w) * h * 3);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            viridis(scale > 0 ? pixelError(reference, image, x + i, y + j) / scale : 0, map.pixel(i, j));
+    return cropImage(map, 0, 0, w, h, magnify);
+}
+
+double errorQuantile(const Image& reference, const Image& image, int x, int y, int w, int h, double q) {
+    std::vector<double> e;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            if (const double v = pixelError(reference, image, x + i, y + j); std::isfinite(v)) e.push_back(v);
+    if (e.empty()) return 0;
+    const size_t k = std::min(e.size() - 1, size_t(q * double(e.size())));
+    std::nth_element(e.begin(), e.begin() + long(k), e.end());
+    return e[k];
+}
+
+Image errorColourBar(int width, int height) {
+    Image bar;
+    bar.width = width;
+    bar.height = height;
+    bar.rgb.resize(size_t(width) * height * 3);
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) viridis(double(i) / std::max(width - 1, 1), bar.pixel(i, j));
+    return bar;
+}
+
+int blockColumns(int w) { return (w + kErrorBlockSize - 1) / kErrorBlockSize; }
+int blockCount(int w, int h) { return blockColumns(w) * blockColumns(h); }
+
+std::vector<double> blockSquaredErrors(const Image& reference, const Image& image, int x, int y, int w, int h) {
+    checkShape(reference, "reference");
+    checkShape(image, "compared");
+    std::vector<double> blocks(size_t(blockCount(w, h)), 0.0);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const float* r = reference.pixel(x + i, y + j);
+            const float* p = image.pixel(x + i, y + j);
+            if (!finitePixel(r) || !finitePixel(p)) continue;
+            double sum = 0;
+            for (int c = 0; c < 3; ++c) sum += (double(r[c]) - double(p[c])) * (double(r[c]) - double(p[c]));
+            blocks[size_t(j / kErrorBlockSize) * blockColumns(w) + i / kErrorBlockSize] += sum;
+        }
+    return blocks;
+}
+
+std::vector<double> blockSums(const std::vector<float>& map, int mapWidth, int x, int y, int w, int h) {
+    std::vector<double> blocks(size_t(blockCount(w, h)), 0.0);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const float v = map[size_t(y + j) * size_t(mapWidth) + size_t(x + i)];
+            if (std::isfinite(v)) blocks[size_t(j / kErrorBlockSize) * blockColumns(w) + i / kErrorBlockSize] += v;
+        }
+    return blocks;
+}
+
 Image cropImage(const Image& image, int x, int y, int w, int h, int scale) {
     checkShape(image, "cropped");
     scale = std::max(scale, 1);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include <stipple/render/renderer.h>
 
@@ -29,6 +30,26 @@ double noiseFloor(const Image& varianceOfMean);
 inline double correctedMse(double mse, double floor) { return mse > floor ? mse - floor : 0.0; }
 // A cell whose corrected MSE is within 2× the floor cannot be told apart from the reference's noise.
 inline bool floorLimited(double correctedMse, double floor) { return correctedMse <= 2.0 * floor; }
+
+// Error per block, for intervals that need no more seeds: where pixels are sampled independently, blocks of
+// pixels are independent replicates within one render, and the K seeds' values of one block give its variance.
+inline constexpr int kErrorBlockSize = 8;
+// Blocks of a w × h rectangle: row-major from its top left, kErrorBlockSize square, the last column and row cut short.
+int blockColumns(int w);
+int blockCount(int w, int h);
+// Σ_pixels Σ_rgb (I_ref − I)² per block of the rectangle (x, y, w, h), finite pixels only.
+std::vector<double> blockSquaredErrors(const Image& reference, const Image& image, int x, int y, int w, int h);
+// Σ_pixels of a per-pixel map (mapWidth wide, e.g. FLIP) per block of the rectangle.
+std::vector<double> blockSums(const std::vector<float>& map, int mapWidth, int x, int y, int w, int h);
+
+// A false-colour map (viridis, colour-blind safe) of the per-pixel error sqrt(Σ_rgb (I_ref − I)²) of the w×h region
+// at (x, y), 0 to `scale` (clamped), each pixel repeated `magnify` times; its values are linear, so an sRGB PNG of it
+// shows viridis' colours.
+Image errorMap(const Image& reference, const Image& image, int x, int y, int w, int h, double scale, int magnify = 1);
+// The q-quantile (0..1) of that per-pixel error over the region: a shared scale for several maps.
+double errorQuantile(const Image& reference, const Image& image, int x, int y, int w, int h, double q);
+// The colour bar of errorMap: `width` × `height`, 0 on the left.
+Image errorColourBar(int width, int height);
 
 // Copies the w×h region at (x, y) (clamped to the image), each pixel repeated `scale` times in x and y.
 Image cropImage(const Image& image, int x, int y, int w, int h, int scale = 1);

@@ -29,6 +29,7 @@ const char* checkTypeName(CheckType type) {
     case CheckType::TimeCeiling: return "time_ceiling";
     case CheckType::EqualTime: return "equal_time";
     case CheckType::EqualSpp: return "equal_spp";
+    case CheckType::Compare: return "compare";
     }
     return "?";
 }
@@ -456,9 +457,65 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
                 if (c["study"]) k.study = P.get<std::string>(c["study"], "study");
                 k.notSeparatedFails = notSeparated(c, false);
+            } else if (type == "compare") {
+                k.type = CheckType::Compare;
+                const std::string what = "a compare check";
+                P.onlyKeys(c, {"type", "scene", "region", "patterns", "basis", "metric", "expect", "margin", "spp",
+                               "study", "fails_run", "not_separated"},
+                           what);
+                k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
+                if (c["region"]) {
+                    k.region = P.get<std::string>(c["region"], "region");
+                    const MatrixScene* ms = m.findScene(k.scene);
+                    bool known = k.region == "image";
+                    for (const auto& r : ms ? ms->regions : std::vector<Region>{}) known |= r.name == k.region;
+                    if (!known)
+                        P.fail(c["region"], "region must be 'image' or a region of the one scene named, got '" +
+                                                k.region + "'");
+                }
+                const yaml::Node patterns = P.required(c, "patterns", what);
+                if (!patterns.IsSequence() || patterns.size() < 2)
+                    P.fail(patterns, "patterns must list at least two patterns (A, B, ...)");
+                for (const auto& p : patterns) k.patterns.push_back(matrixPattern(p));
+                if (c["basis"]) {
+                    auto v = P.get<std::string>(c["basis"], "basis");
+                    if (v != "samples" && v != "time") P.fail(c["basis"], "basis must be samples or time, got '" + v + "'");
+                    k.equalTime = v == "time";
+                }
+                if (c["metric"]) {
+                    auto v = P.get<std::string>(c["metric"], "metric");
+                    if (v != "mse" && v != "flip") P.fail(c["metric"], "metric must be mse or flip, got '" + v + "'");
+                    k.flipMetric = v == "flip";
+                    if (k.flipMetric && k.equalTime)
+                        P.fail(c["metric"], "metric flip is compared at equal samples only (basis: samples)");
+                }
+                if (c["expect"]) {
+                    auto v = P.get<std::string>(c["expect"], "expect");
+                    if (v == "any") k.expect = Expectation::Any;
+                    else if (v == "equivalent") k.expect = Expectation::Equivalent;
+                    else if (v == "better") k.expect = Expectation::Better;
+                    else if (v == "worse") k.expect = Expectation::Worse;
+                    else P.fail(c["expect"], "expect must be any, equivalent, better or worse, got '" + v + "'");
+                }
+                if (const yaml::Node margin = c["margin"]) {
+                    if (!margin.IsSequence() || margin.size() != 2) P.fail(margin, "margin must be [lo, hi]");
+                    k.marginLo = P.positive(margin[0], "margin lo");
+                    k.marginHi = P.positive(margin[1], "margin hi");
+                    if (!(k.marginLo < 1 && k.marginHi > 1))
+                        P.fail(margin, "margin must hold 1 strictly inside: [lo < 1, hi > 1]");
+                }
+                k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
+                if (c["study"]) k.study = P.get<std::string>(c["study"], "study");
+                if (c["fails_run"]) {
+                    auto v = P.get<std::string>(c["fails_run"], "fails_run");
+                    if (v != "true" && v != "false") P.fail(c["fails_run"], "fails_run must be true or false");
+                    k.failFails = v == "true";
+                }
+                k.notSeparatedFails = notSeparated(c, false);
             } else {
                 P.fail(c["type"], "unknown check type '" + type +
-                                      "' (known: ordering, slope, time_ratio, time_ceiling, equal_time, equal_spp)");
+                                      "' (known: ordering, slope, time_ratio, time_ceiling, equal_time, equal_spp, "
+                                      "compare)");
             }
             m.checks.push_back(k);
         }

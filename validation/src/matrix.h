@@ -56,7 +56,10 @@ struct CropSettings {
     uint32_t spp = 0;        // 0: the largest spp of the matrix
 };
 
-enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime, EqualSpp };
+enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime, EqualSpp, Compare };
+
+// What a compare check expects of pattern A against pattern B (error ratio A / B).
+enum class Expectation { Any, Equivalent, Better, Worse };
 
 struct Check {
     CheckType type = CheckType::Ordering;
@@ -79,6 +82,13 @@ struct Check {
     std::string study;       // the study's own conclusion for the scene, printed beside the measured one
     std::string region;      // empty: the whole image and every region of the scene; else that region only
     bool flipMetric = false; // metric: flip (mean LDR-FLIP) instead of mse
+    // compare: patterns (A, B; more than two: every pair, in list order), equal time or equal samples, the
+    // expectation, the equivalence margin on the error ratio; region "image": the whole image only
+    std::vector<std::string> patterns;
+    bool equalTime = false;
+    Expectation expect = Expectation::Any;
+    double marginLo = 0.8, marginHi = 1.25;
+    bool failFails = true; // fails_run: false makes a FAIL a finding that does not fail the run
 };
 
 struct Matrix {

@@ -35,9 +35,13 @@ std::string regionCropFile(const std::string& scene, const std::string& region, 
     return "crops/" + safeName(scene) + "-region-" + safeName(region) + "-" + safeName(column) + ".png";
 }
 
-int regionCropScale(const PixelRect& rect, int minSide) {
-    const int side = std::max(1, std::min(rect.w, rect.h));
-    return std::clamp((minSide + side - 1) / side, 1, 16);
+std::string regionErrorMapFile(const std::string& scene, const std::string& region, const std::string& pattern) {
+    return "crops/" + safeName(scene) + "-region-" + safeName(region) + "-error-" + safeName(pattern) + ".png";
+}
+
+int regionCropScale(const PixelRect& rect, int minLongSide) {
+    const int side = std::max({1, rect.w, rect.h});
+    return std::clamp((minLongSide + side - 1) / side, 1, 16);
 }
 
 } // namespace stipple::validation

@@ -23,7 +23,10 @@ double regionNoiseFloor(const Image& referenceVariance, const Region& region);
 // Crop PNG of a region, relative to the report folder: crops/<scene>-region-<region>-<column>.png
 std::string regionCropFile(const std::string& scene, const std::string& region, const std::string& column);
 
-// Magnification that makes a region's crop at least `minSide` pixels on its short side (1..16).
-int regionCropScale(const PixelRect& rect, int minSide = 128);
+// Error map PNG of a region's crop (errorMap, image_metrics.h), relative to the report folder.
+std::string regionErrorMapFile(const std::string& scene, const std::string& region, const std::string& pattern);
+
+// Magnification that makes a region's crop at least `minLongSide` pixels on its long side (1..16).
+int regionCropScale(const PixelRect& rect, int minLongSide = 256);
 
 } // namespace stipple::validation

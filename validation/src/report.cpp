@@ -50,6 +50,12 @@ int runGnuplot(const std::string& plotsDir) {
 // A number in a gnuplot data file: full precision; gnuplot skips the non-finite "null".
 std::string plotNumber(double v) { return std::isfinite(v) ? fmt("%.17g", v) : std::string("null"); }
 
+// gnuplot point type of the i-th pattern: filled and open squares, circles, triangles, diamonds.
+int patternPointType(size_t i) {
+    static const int types[] = {5, 7, 9, 11, 13, 4, 6, 8, 10, 12};
+    return types[i % (sizeof types / sizeof types[0])];
+}
+
 bool writePlots(const std::string& dir, const ReportInputs& in) {
     const Matrix& m = *in.matrix;
     fs::create_directory(fs::path(dir) / "plots"); // never its parent: see writeReport
@@ -57,11 +63,13 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
     for (const auto& scene : m.scenes) {
         const std::string base = safeName(scene.name);
         std::ostringstream dat;
-        dat << "# spp mean_rms lo hi median_render_seconds (one block per pattern: " << [&] {
+        dat << "# spp mean_rms lo hi median_cpu_seconds (one block per pattern: " << [&] {
             std::string s;
             for (auto& p : m.patterns) s += p + " ";
             return s;
         }() << ")\n";
+        // The axes are fitted to the data: the plotted points' range, widened by a sixth of a decade each side.
+        double xMin = INFINITY, xMax = 0, tMin = INFINITY, tMax = 0, yMin = INFINITY, yMax = 0;
         for (const auto& pattern : m.patterns) {
             dat << "# " << pattern << "\n";
             for (const auto& c : in.cells) {
@@ -69,35 +77,69 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
                 double h = std::isfinite(c.rms.halfWidth) ? c.rms.halfWidth : 0;
                 // Log axes cannot show a lower bound ≤ 0: clamp it to a hundredth of the mean.
                 double lo = std::max(c.rms.mean - h, 0.01 * c.rms.mean);
+                const double seconds = c.medianCpuSeconds > 0 ? c.medianCpuSeconds : c.medianRenderSeconds;
                 dat << c.spp << " " << plotNumber(c.rms.mean) << " " << plotNumber(lo) << " "
-                    << plotNumber(c.rms.mean + h) << " " << plotNumber(c.medianRenderSeconds) << "\n";
+                    << plotNumber(c.rms.mean + h) << " " << plotNumber(seconds) << "\n";
+                xMin = std::min(xMin, double(c.spp));
+                xMax = std::max(xMax, double(c.spp));
+                if (seconds > 0) {
+                    tMin = std::min(tMin, seconds);
+                    tMax = std::max(tMax, seconds);
+                }
+                yMin = std::min(yMin, lo);
+                yMax = std::max(yMax, c.rms.mean + h);
             }
             dat << "\n\n";
         }
         writeTextFile((fs::path(dir) / "plots" / (base + ".dat")).string(), dat.str());
+        const double pad = std::pow(10.0, 1.0 / 6);
+        // The range and labelled tics at 1, 2 and 5 × 10^k inside it (a log axis labels only decades otherwise, and
+        // a fitted range may hold one or none).
+        auto range = [&](const char* axis, double lo, double hi) {
+            if (!(std::isfinite(lo) && lo > 0 && hi > 0)) return std::string();
+            lo /= pad;
+            hi *= pad;
+            std::string tics;
+            for (int k = int(std::floor(std::log10(lo))); k <= int(std::ceil(std::log10(hi))); ++k)
+                for (double mant : {1.0, 2.0, 5.0})
+                    if (const double v = mant * std::pow(10.0, k); v >= lo && v <= hi)
+                        tics += (tics.empty() ? "" : ", ") + fmt("%g", v);
+            return fmt("set %srange [%.6g:%.6g]\n", axis, lo, hi) +
+                   (tics.empty() ? std::string() : fmt("set %stics (%s)\n", axis, tics.c_str()));
+        };
 
         auto plotCommand = [&](bool bySeconds) {
             std::string cmd = "plot ";
             for (size_t i = 0; i < m.patterns.size(); ++i) {
                 if (i) cmd += ", \\\n     ";
                 cmd += gq(base + ".dat") + fmt(" index %zu ", i) +
-                       (bySeconds ? "using 5:2 with linespoints" : "using 1:2:3:4 with yerrorlines") + " lw 2 lc rgb " +
-                       gq(patternColor(m.patterns[i])) + " title " + gq(m.patterns[i]);
+                       (bySeconds ? "using 5:2 with linespoints" : "using 1:2:3:4 with yerrorlines") +
+                       fmt(" lw 2 pt %d ps 1.2 lc rgb ", patternPointType(i)) + gq(patternColor(m.patterns[i])) +
+                       " title " + gq(m.patterns[i]);
             }
             return cmd + "\n";
         };
         for (int kind = 0; kind < 2; ++kind) {
             const bool bySeconds = kind == 1;
             const std::string stem = base + (bySeconds ? "-rms-seconds" : "-rms-spp");
-            std::string common = "set logscale xy\nset grid\nset key top right noenhanced\nset format y '10^{%L}'\n"
+            std::string common = "set logscale xy\nset grid\nset key below horizontal noenhanced samplen 2 width 1\n"
+                                 "set format y '%g'\nset format x '%g'\n"
                                  "set ylabel 'RMS (eq. 1, reference floor removed)'\n";
-            common += bySeconds ? "set xlabel 'median render seconds'\n" : "set xlabel 'samples per pixel'\n";
+            common += bySeconds ? "set xlabel 'median CPU seconds, as in the verdicts'\n"
+                                : "set xlabel 'samples per pixel'\n";
+            common += bySeconds ? range("x", tMin, tMax) : range("x", xMin, xMax);
+            if (!bySeconds) {
+                std::string tics;
+                for (uint32_t spp : m.spp) tics += (tics.empty() ? "" : ", ") + std::to_string(spp);
+                common += "set xtics (" + tics + ")\n";
+            }
+            common += range("y", yMin, yMax);
             common +=
-                "set title " + gq(scene.name + (bySeconds ? ": RMS vs render time" : ": RMS vs spp")) + " noenhanced\n";
+                "set title " + gq(scene.name + (bySeconds ? ": RMS vs CPU time" : ": RMS vs spp")) + " noenhanced\n";
             script += "reset\n" + common;
-            script += "set terminal pngcairo size 600,440 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
+            script += "set terminal pngcairo size 640,440 enhanced font ',10'\nset output " + gq(stem + ".png") + "\n" +
                       plotCommand(bySeconds);
-            script += "set terminal svg size 600,440 enhanced\nset output " + gq(stem + ".svg") + "\n" +
+            script += "set terminal svg size 640,440 enhanced\nset output " + gq(stem + ".svg") + "\n" +
                       plotCommand(bySeconds) + "unset output\n";
         }
     }
@@ -112,11 +154,12 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
     return true;
 }
 
-std::string cellTable(const Matrix& m, const std::vector<CellAggregate>& cells, uint32_t onlySpp) {
+std::string cellTable(const std::string& dir, const Matrix& m, const std::vector<CellAggregate>& cells,
+                      uint32_t onlySpp) {
     std::ostringstream o;
-    o << "<table><tr><th>scene</th><th>pattern</th><th>spp</th><th>mean RMS</th><th>± 95%</th>"
+    o << "<div class=\"wide\"><table><tr><th>scene</th><th>pattern</th><th>spp</th><th>mean RMS</th><th>± 95%</th>"
          "<th>RMS measured</th><th>floor-limited seeds</th><th>median render s</th><th>median sampler s</th>"
-         "<th>efficiency 1/(MSE·s)</th><th>non-finite px</th></tr>\n";
+         "<th>efficiency 1/(MSE·s)</th><th>non-finite px</th><th>seed " << m.seeds.front() << "</th></tr>\n";
     for (const auto& scene : m.scenes)
         for (const auto& c : cells) {
             if (c.scene != scene.name || (onlySpp && c.spp != onlySpp)) continue;
@@ -124,10 +167,12 @@ std::string cellTable(const Matrix& m, const std::vector<CellAggregate>& cells, 
               << fmt("<td>%.5g</td><td>%.2g</td><td>%.5g</td><td>%d/%zu</td><td>%.4f</td><td>%.4f</td><td>%.4g</"
                      "td><td>%llu</td>",
                      c.rms.mean, c.rms.halfWidth, c.meanRmsMeasured, c.floorLimitedSeeds, c.seeds,
-                     c.medianRenderSeconds, c.medianSamplerSeconds, c.efficiency, (unsigned long long)c.nonFinitePixels)
+                     c.medianRenderSeconds, c.medianSamplerSeconds, c.efficiency, (unsigned long long)c.nonFinitePixels);
+            const std::string exr = cellExrFile(c.scene, c.pattern, c.spp, m.seeds.front());
+            o << (fs::exists(fs::path(dir) / exr) ? "<td><a href=\"" + exr + "\">EXR</a></td>" : std::string("<td>–</td>"))
               << "</tr>\n";
         }
-    o << "</table>\n";
+    o << "</table></div>\n";
     return o.str();
 }
 
@@ -141,6 +186,11 @@ std::string safeName(const std::string& name) {
 
 std::string cropFile(const std::string& scene, const std::string& pattern) {
     return "crops/" + safeName(scene) + "-" + safeName(pattern) + ".png";
+}
+
+std::string cellExrFile(const std::string& scene, const std::string& pattern, uint32_t spp, uint64_t seed) {
+    return "exr/" + safeName(scene) + "-" + safeName(pattern) + "-" + std::to_string(spp) + "spp-seed" +
+           std::to_string(seed) + ".exr";
 }
 
 std::string summaryTable(const Matrix& m, const std::vector<CellAggregate>& cells, uint32_t spp) {
@@ -172,6 +222,9 @@ const char* const kReportStyle =
     "section.scene>.top{display:flex;gap:1em;align-items:flex-start;flex-wrap:wrap}section.scene>.top>img{width:"
     "320px}"
     "section.scene>.top>div{flex:1 1 420px;min-width:0}"
+    ".wide{max-width:100%;overflow-x:auto}table.study{font-size:85%}td.v{white-space:nowrap}"
+    ".maps{display:grid;grid-template-columns:repeat(auto-fill,minmax(260px,1fr));gap:8px}"
+    ".maps figure{margin:0}.maps img{max-width:100%}"
     "@media print{section.scene{break-before:page}details{display:block}}";
 
 // What the run was: renderer, rows, seeds, time, and how RMS is measured.
@@ -247,7 +300,7 @@ std::string sceneSectionHtml(const std::string& dir, const ReportInputs& in, con
     std::vector<CellAggregate> mine;
     for (const auto& c : in.cells)
         if (c.scene == scene.name) mine.push_back(c);
-    o << cellTable(m, mine, 0) << "</details></section>\n";
+    o << cellTable(dir, m, mine, 0) << "</details></section>\n";
     return o.str();
 }
 
@@ -257,7 +310,7 @@ std::string slopesTableHtml(const ReportInputs& in) {
     std::ostringstream o;
     o << "<h2>Slopes of log RMS vs log spp</h2>\n<p class=\"note\">Least squares over per-seed points; 95% interval "
          "on the slope. Independent sampling converges at −0.5; stratified between −0.75 (edges) and −1 (smooth) in "
-         "2D, less in a full renderer's many dimensions.</p>\n<table><tr><th>scene</th>";
+         "2D, less in a full renderer's many dimensions.</p>\n<div class=\"wide\"><table><tr><th>scene</th>";
     for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
     for (const auto& scene : m.scenes) {
@@ -271,14 +324,14 @@ std::string slopesTableHtml(const ReportInputs& in) {
         }
         o << "</tr>\n";
     }
-    o << "</table>\n";
+    o << "</table></div>\n";
     return o.str();
 }
 
 // Per scene: load and BVH times, the reference's spp, time, floor and cache key.
 std::string scenesTableHtml(const Results& r) {
     std::ostringstream o;
-    o << "<details><summary>Scenes: load, BVH build, references</summary><table><tr><th>scene</th><th>file</th>"
+    o << "<details><summary>Scenes: load, BVH build, references</summary><div class=\"wide\"><table><tr><th>scene</th><th>file</th>"
          "<th>size</th><th>load s</th><th>BVH s</th><th>warm-up s</th><th>ref. spp</th><th>ref. s</th>"
          "<th>floor (MSE)</th><th>reference key</th></tr>\n";
     for (const auto& s : r.scenes)
@@ -288,13 +341,15 @@ std::string scenesTableHtml(const Results& r) {
                  s.buildSeconds, s.warmupSeconds, s.referenceSpp,
                  s.referenceSeconds > 0 ? fmt("%.2f", s.referenceSeconds).c_str() : "cached", s.noiseFloor)
           << "<td>" << html(s.referenceKey) << "</td></tr>\n";
-    o << "</table></details>\n";
+    o << "</table></div></details>\n";
     return o.str();
 }
 
 } // namespace
 
-bool writeReport(const std::string& dir, const ReportInputs& in) {
+bool writeReport(const std::string& dir, const ReportInputs& inputs) {
+    ReportInputs in = inputs;
+    in.reportDir = dir;
     const Matrix& m = *in.matrix;
     const Results& r = *in.results;
     // dir is the run's staging folder (report_publish.h), made when the run started. Nothing here creates it (or

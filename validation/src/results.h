@@ -31,6 +31,9 @@ struct ResultRow {
     double flip = NAN;                                 // mean LDR-FLIP (67 pixels per degree) against the reference
     double spectrumRatio = NAN;                        // error power high / low frequency: 1 white, > 1 blue
     std::vector<double> regionFlip, regionSpectrumRatio; // per region, as above
+    // Per block of kErrorBlockSize pixels (image_metrics.h), row-major: Σ squared error and Σ FLIP, of the whole image
+    // and of each region (its own blocks from its top left, the regions' lists one after the other).
+    std::vector<double> blockSse, blockFlip, regionBlockSse, regionBlockFlip;
 };
 
 struct SceneInfo {

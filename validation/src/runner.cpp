@@ -101,6 +101,35 @@ void writeRegionCrops(const std::string& reportDir, const MatrixScene& scene, co
     }
 }
 
+// One seed's render of each cell as EXR, for viewers outside the report.
+void writeCellExr(const std::string& reportDir, const std::string& scene, const render::RenderOptions& o,
+                  const render::Image& image) {
+    fs::create_directory(fs::path(reportDir) / "exr"); // never its parent: see writeReport
+    render::writeExr((fs::path(reportDir) / cellExrFile(scene, o.pattern, o.spp, o.seed)).string(), image,
+                     {{"scene", scene}, {"pattern", o.pattern}, {"spp", std::to_string(o.spp)},
+                      {"seed", std::to_string(o.seed)}});
+}
+
+// Per region, a false-colour error map of each pattern's crop render, all on one scale: the largest 99th
+// percentile of the per-pixel error over the patterns (a few fireflies do not wash the maps out).
+void writeRegionErrorMaps(const std::string& reportDir, const MatrixScene& scene, const render::Image& reference,
+                          const std::vector<std::pair<std::string, render::Image>>& renders) {
+    if (renders.empty()) return;
+    fs::create_directory(fs::path(reportDir) / "crops"); // never its parent: see writeReport
+    render::writePng((fs::path(reportDir) / kErrorBarFile).string(), errorColourBar(256, 12));
+    for (const Region& region : scene.regions) {
+        const PixelRect px = pixelRect(region, reference.width, reference.height);
+        double scale = 0;
+        for (const auto& [pattern, image] : renders)
+            scale = std::max(scale, errorQuantile(reference, image, px.x, px.y, px.w, px.h, 0.99));
+        for (const auto& [pattern, image] : renders)
+            render::writePng((fs::path(reportDir) / regionErrorMapFile(scene.name, region.name, pattern)).string(),
+                             errorMap(reference, image, px.x, px.y, px.w, px.h, scale, regionCropScale(px)));
+        writeTextFile((fs::path(reportDir) / (regionErrorMapFile(scene.name, region.name, "scale") + ".txt")).string(),
+                      fmt("%.6g\n", scale));
+    }
+}
+
 // The matrix's scene loaded, or an error naming the matrix; a scene marked unloadable by preflight fails the same.
 std::unique_ptr<render::Scene> loadMatrixScene(const MatrixScene& ms, const Matrix& m, const RunOptions& opt) {
     if (auto bad = opt.unloadable.find(ms.name); bad != opt.unloadable.end())
@@ -132,6 +161,8 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
                      const std::vector<double>& regionFloors) {
     const FlipMaps flip = ldrFlipLinear(ref.image, image);
     row.flip = flip.mean();
+    row.blockSse = blockSquaredErrors(ref.image, image, 0, 0, image.width, image.height);
+    row.blockFlip = blockSums(flip.flip, flip.width, 0, 0, image.width, image.height);
     row.spectrumRatio = errorSpectrum(ref.image, image).highOverLow;
     for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
         const Region& region = ms.regions[ri];
@@ -145,6 +176,8 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
         const double mse = regionError(ref.image, image, region).mse;
         row.regionMse.push_back(mse);
         row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
+        for (double v : blockSquaredErrors(ref.image, image, px.x, px.y, px.w, px.h)) row.regionBlockSse.push_back(v);
+        for (double v : blockSums(flip.flip, flip.width, px.x, px.y, px.w, px.h)) row.regionBlockFlip.push_back(v);
     }
 }
 
@@ -198,7 +231,16 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
     const int threads = opt.threads ? opt.threads : m.threads;
     const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
 
-    Progress progress(opt.referencesOnly ? 0 : groups.size() * m.patterns.size());
+    // Work in spp: every cell × seed, and every scene's reference (taken off again when it comes from the cache).
+    double work = 0;
+    std::vector<bool> sceneRuns(m.scenes.size(), false);
+    for (const auto& g : groups) {
+        if (!opt.referencesOnly) work += double(g.spp) * double(m.patterns.size());
+        sceneRuns[g.scene] = true;
+    }
+    for (size_t si = 0; si < m.scenes.size(); ++si)
+        if (sceneRuns[si]) work += m.scenes[si].referenceSpp ? m.scenes[si].referenceSpp : m.reference.spp;
+    Progress progress(opt.referencesOnly ? 0 : groups.size() * m.patterns.size(), work);
     std::vector<std::optional<SceneFingerprint>> fingerprinted(m.scenes.size());
     for (size_t si = 0; si < m.scenes.size(); ++si) {
         const MatrixScene& ms = m.scenes[si];
@@ -238,8 +280,11 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                               base.width, base.height,
                               scene ? (" (key " + referenceKey(*scene, refOptions) + ")").c_str()
                                     : (" by " + info.integrator).c_str()));
+            progress.resume();
+            progress.beginTask("reference for " + ms.name, refOptions.spp);
             Reference ref = scene ? loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir)
                                   : external->renderer.reference(refOptions, m.seeds, opt.cacheDir);
+            progress.endTask(!ref.fromCache);
             if (!ref.cacheProblem.empty())
                 progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem +
                               "): rendered again");
@@ -264,6 +309,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
 
             info.warmupSeconds = scene ? warmUp(*scene, base, m) : 0; // a program's start-up is part of its time
 
+            std::vector<std::pair<std::string, render::Image>> cropRenders; // the crop group's, for error maps
             for (size_t gi = 0; gi < mine.size(); ++gi) {
                 const CellGroup& g = mine[gi];
                 for (size_t k = 0; k < m.patterns.size(); ++k) {
@@ -277,18 +323,23 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
                     addImageMetrics(row, ref, r.image, ms, regionFloors);
                     results.rows.push_back(row);
+                    if (g.seed == m.seeds.front()) writeCellExr(opt.reportDir, ms.name, o, r.image);
                     if (g.spp == cropSpp && g.seed == m.seeds.front()) {
                         writeCrop(opt.reportDir, ms.name, pattern, r.image, m.crop);
                         writeRegionCrops(opt.reportDir, ms, pattern, r.image);
+                        cropRenders.emplace_back(pattern, std::move(r.image));
                     }
                     progress.step(fmt("%s %s %u spp seed %llu: RMS %.4g, %.3f s (sampler %.3f s)%s", ms.name.c_str(),
                                       pattern.c_str(), g.spp, (unsigned long long)g.seed, row.rmsCorrected,
                                       row.renderSeconds, row.samplerSeconds,
-                                      row.floorLimited ? ", floor-limited" : ""));
+                                      row.floorLimited ? ", floor-limited" : ""),
+                                  g.spp);
                 }
             }
+            writeRegionErrorMaps(opt.reportDir, ms, ref.image, cropRenders);
             results.scenes.push_back(info);
         } catch (const std::exception& e) {
+            progress.endTask(false);
             progress.resume();
             // std::bad_alloc's own text names an internal type: say what it means.
             const bool oom = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;

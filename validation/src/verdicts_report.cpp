@@ -1,18 +1,25 @@
 #include "verdicts_report.h"
 #include "text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
 #include "efficiency.h"
+#include "comparison_claims.h"
 #include "efficiency_claims.h"
+#include "equivalence.h"
+#include "image_metrics.h"
 #include "regions.h"
 #include "statistics.h"
 
 namespace stipple::validation {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -42,23 +49,6 @@ std::vector<EfficiencyRanking> rankingsOf(const ReportInputs& in, const MatrixSc
     return out;
 }
 
-// "stratified is the most efficient at equal time, 1.9× poisson (95% 1.6-2.3)" or "... not separated from ...".
-std::string sentence(const EfficiencyRanking& r) {
-    if (r.ranked.empty()) return "no cells";
-    if (r.ranked.size() == 1) return r.ranked[0].pattern + " alone";
-    const auto& st = r.steps[0];
-    std::string s = st.separated
-                        ? fmt("%s is the most efficient at equal time, %.2f× %s (95%% %.2f-%.2f)",
-                              r.ranked[0].pattern.c_str(), st.ratio, r.ranked[1].pattern.c_str(), st.lo, st.hi)
-                        : fmt("%s and %s lead, not separated (%.2f×, 95%% %.2f-%.2f)", r.ranked[0].pattern.c_str(),
-                              r.ranked[1].pattern.c_str(), st.ratio, st.lo, st.hi);
-    double lo = 0, hi = 0;
-    const auto& last = r.ranked.back();
-    const double worst = r.ratioOf(r.ranked[0].pattern, last.pattern, &lo, &hi);
-    if (r.ranked.size() > 2) s += fmt("; %.3g× %s (95%% %.3g-%.3g)", worst, last.pattern.c_str(), lo, hi);
-    return s;
-}
-
 // Mean FLIP ± 95% and the geometric mean of the error spectrum's high/low ratio over the seeds of a cell;
 // region < 0: the whole image.
 struct Perceptual {
@@ -84,20 +74,14 @@ Perceptual perceptualOf(const std::vector<ResultRow>& rows, const std::string& s
     return p;
 }
 
-std::string studyOf(const Matrix& m, const std::string& scene) {
-    for (const auto& k : m.checks)
-        if (k.type == CheckType::EqualTime && (k.scene == scene || k.scene == "all") && !k.study.empty())
-            return k.study;
-    return "";
-}
-
 } // namespace
 
 std::string patternColor(const std::string& pattern) {
     // Okabe–Ito: distinguishable with the common colour-vision deficiencies; the plots use the same.
     static const std::pair<const char*, const char*> colors[] = {
         {"independent", "#E69F00"},  {"stratified", "#0072B2"}, {"poisson", "#009E73"},
-        {"poisson-seed", "#CC79A7"}, {"sobol", "#D55E00"},      {"pmj02", "#56B4E9"}};
+        {"poisson-seed", "#CC79A7"}, {"sobol", "#D55E00"},      {"pmj02", "#56B4E9"},
+        {"sobol+blue-noise", "#000000"}, {"stratified+blue-noise", "#999933"}}; // black; Tol's olive
     for (const auto& [name, color] : colors)
         if (pattern == name) return color;
     return "#000000";
@@ -107,33 +91,169 @@ std::string patternHeader(const std::string& pattern) {
     return "<span class=\"sw\" style=\"background:" + patternColor(pattern) + "\"></span>" + html(pattern);
 }
 
+namespace {
+
+// "0.83× (0.78–0.89) BETTER", oriented A / B; `flipped` shows B / A instead (interval and direction swapped).
+std::string comparisonCell(const Comparison& c, CheckStatus status, bool flipped) {
+    if (c.verdict == Verdict::Unmeasured) return "<td>–</td>";
+    double r = c.ratio, lo = c.lo95, hi = c.hi95;
+    Verdict v = c.verdict;
+    if (flipped) {
+        r = 1 / c.ratio;
+        lo = 1 / c.hi95;
+        hi = 1 / c.lo95;
+        v = v == Verdict::Better ? Verdict::Worse : v == Verdict::Worse ? Verdict::Better : v;
+    }
+    const char* study = status == CheckStatus::Pass ? "holds" : status == CheckStatus::Fail ? "refuted" : "undecided";
+    const char* cls = status == CheckStatus::Pass ? "PASS" : status == CheckStatus::Fail ? "FAIL" : "NOT";
+    return fmt("<td class=\"v\">%.3g× <small>(%.3g–%.3g)</small><br><strong>%s</strong> <span class=\"%s\">%s</span>"
+               "</td>",
+               r, lo, hi, verdictName(v), cls, study);
+}
+
+struct StudyColumn {
+    bool equalTime, flip;
+    const char* title;
+};
+constexpr StudyColumn kStudyColumns[] = {{false, false, "per sample: MSE ratio"},
+                                         {true, false, "equal CPU time: MSE·s ratio"},
+                                         {false, true, "perceptual: mean FLIP ratio"}};
+
+// The study-tagged verdict of a column for (scene, region, {p, q}), and whether it is oriented q / p.
+const VerdictRow* studyVerdict(const std::vector<CheckOutcome>& outcomes, const StudyColumn& col,
+                               const std::string& scene, const std::string& region, const std::string& p,
+                               const std::string& q, bool& flipped, std::string& statement) {
+    for (const auto& o : outcomes) {
+        if (o.check.type != CheckType::Compare || o.check.study.empty()) continue;
+        for (const auto& v : o.verdicts) {
+            if (v.equalTime != col.equalTime || v.flip != col.flip || v.scene != scene || v.region != region) continue;
+            if ((v.a == p && v.b == q) || (v.a == q && v.b == p)) {
+                flipped = v.a == q;
+                statement = o.check.study;
+                return &v;
+            }
+        }
+    }
+    return nullptr;
+}
+
+// The first screen's table: per study statement's pair, scene and region, the three measurements.
+std::string studyTableHtml(const ReportInputs& in) {
+    const Matrix& m = *in.matrix;
+    // The pairs the study's statements name, oriented as first written (e.g. poisson-seed / stratified).
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::vector<std::string> statements[3];
+    for (const auto& o : in.outcomes) {
+        if (o.check.type != CheckType::Compare || o.check.study.empty() || o.check.patterns.size() != 2) continue;
+        const auto& k = o.check;
+        bool known = false;
+        for (const auto& [p, q] : pairs)
+            known |= (p == k.patterns[0] && q == k.patterns[1]) || (p == k.patterns[1] && q == k.patterns[0]);
+        if (!known) pairs.emplace_back(k.patterns[0], k.patterns[1]);
+        for (int c = 0; c < 3; ++c)
+            if (kStudyColumns[c].equalTime == k.equalTime && kStudyColumns[c].flip == k.flipMetric &&
+                std::find(statements[c].begin(), statements[c].end(), k.study) == statements[c].end())
+                statements[c].push_back(k.study);
+    }
+    if (pairs.empty()) return "";
+    std::ostringstream o;
+    o << "<h2 id=\"study\">The study's statements, measured at " << m.spp.back() << " spp</h2>\n<div class=\"wide\"><table class=\"study\"><tr><th>scene, region</th><th>pair A / B</th>";
+    for (int c = 0; c < 3; ++c) {
+        o << "<th>" << kStudyColumns[c].title;
+        for (const auto& st : statements[c]) o << "<br><small><em>study: " << html(st) << "</em></small>";
+        o << "</th>";
+    }
+    o << "</tr>\n";
+    for (const auto& s : m.scenes)
+        for (int ri = -1; ri < int(s.regions.size()); ++ri) {
+            const std::string region = ri < 0 ? "" : s.regions[size_t(ri)].name;
+            for (const auto& [p, q] : pairs) {
+                std::string cells;
+                bool any = false;
+                for (const auto& col : kStudyColumns) {
+                    bool flipped = false;
+                    std::string statement;
+                    const VerdictRow* v = studyVerdict(in.outcomes, col, s.name, region, p, q, flipped, statement);
+                    cells += v ? comparisonCell(v->comparison, v->status, flipped) : "<td>–</td>";
+                    any |= v != nullptr;
+                }
+                if (!any) continue;
+                o << "<tr><td><a href=\"#scene-" << safeName(s.name) << "\">" << html(s.name) << "</a>, "
+                  << html(region.empty() ? "whole image" : region) << "</td><td>" << patternHeader(p) << " / "
+                  << patternHeader(q) << "</td>" << cells << "</tr>\n";
+            }
+        }
+    o << "</table></div>\n<p class=\"note\">Ratio of A's error to B's (below 1: A better), 95% interval; "
+         "<strong>EQUIVALENT</strong>: the 90% interval lies inside the margin (two one-sided tests at 5%), "
+         "<strong>BETTER</strong> / <strong>WORSE</strong>: the 95% interval excludes 1, else <strong>NOT "
+         "SEPARATED</strong>. <em>holds / refuted / undecided</em>: the study's statement of the column against that "
+         "verdict. Intervals from the seeds and the image's "
+      << kErrorBlockSize << "-pixel blocks (see the README, <em>Deciding</em>).</p>\n";
+    return o.str();
+}
+
+// The best pattern of a scene (whole image) per sample or at equal time, and its margin over the runner-up.
+std::string bestPatternText(const ReportInputs& in, const MatrixScene& s, bool equalTime) {
+    const auto& rows = in.results->rows;
+    const uint32_t spp = in.matrix->spp.back();
+    const double floor = floorFromRows(rows, s.name);
+    std::vector<std::pair<double, std::string>> ranked;
+    for (const auto& p : in.matrix->patterns) {
+        const ErrorEstimate e = patternError(rows, s, p, spp, -1, false, floor);
+        if (!e.valid()) continue;
+        double logCost = 0;
+        size_t n = 0;
+        for (const auto& r : rows)
+            if (r.scene == s.name && r.pattern == p && r.spp == spp && r.cpuSeconds > 0) {
+                logCost += std::log(r.cpuSeconds);
+                ++n;
+            }
+        ranked.emplace_back(std::log(e.mean) + (equalTime && n ? logCost / double(n) : 0.0), p);
+    }
+    if (ranked.size() < 2) return "–";
+    std::sort(ranked.begin(), ranked.end());
+    const Comparison c = comparePatterns(rows, s, ranked[0].second, ranked[1].second, spp, -1, false, equalTime);
+    return patternHeader(ranked[0].second) +
+           fmt(" <small>%.3g× %s's error%s (95%% %.3g–%.3g)</small> <strong>%s</strong>", c.ratio,
+               ranked[1].second.c_str(), equalTime ? "·time" : "", c.lo95, c.hi95, verdictName(c.verdict));
+}
+
+} // namespace
+
 std::string verdictHeadlineHtml(const ReportInputs& in) {
     const Matrix& m = *in.matrix;
-    const uint32_t spp = m.spp.back();
     std::ostringstream o;
-    size_t pass = 0, fail = 0, ns = 0;
-    for (const auto& c : in.outcomes)
+    size_t pass = 0, fail = 0, ns = 0, failing = 0;
+    size_t verdicts = 0, undecided = 0;
+    for (const auto& c : in.outcomes) {
         (c.status == CheckStatus::Pass ? pass : c.status == CheckStatus::Fail ? fail : ns)++;
+        failing += c.failsRun;
+        for (const auto& v : c.verdicts) {
+            ++verdicts;
+            undecided += v.comparison.verdict == Verdict::NotSeparated || v.comparison.verdict == Verdict::Unmeasured;
+        }
+    }
     o << "<div class=\"headline\"><p class=\"counts\"><strong><span id=\"claims-total\">" << in.outcomes.size()
       << "</span> claims: <span class=\"PASS\" id=\"claims-pass\">" << pass << "</span> PASS, <span class=\"FAIL\" "
       << "id=\"claims-fail\">" << fail << "</span> FAIL, <span class=\"NOT\" id=\"claims-not-separated\">" << ns
-      << "</span> NOT SEPARATED.</strong></p>\n<p>Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
+      << "</span> NOT SEPARATED; <span id=\"claims-failing\">" << failing
+      << "</span> fail the run.</strong> " << verdicts << " comparisons, " << undecided
+      << " not separated.</p>\n<p>Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
       << m.patterns.size() << " patterns × " << m.spp.size() << " spp × " << m.seeds.size()
       << " seeds. Machine: " << std::thread::hardware_concurrency()
-      << " hardware threads; load average (1, 5, 15 min) when the report was "
-      << "written: " << html(loadAverage()) << ".</p>\n<p>At equal render time (CPU seconds), " << spp
-      << " spp:</p><ul>\n";
-    for (const auto& s : m.scenes) {
-        const auto rankings = rankingsOf(in, s, spp);
-        o << "<li><a href=\"#scene-" << safeName(s.name) << "\"><strong>" << html(s.name)
-          << "</strong></a>: " << html(sentence(rankings[0])) << ".";
-        const std::string study = studyOf(m, s.name);
-        if (!study.empty()) o << " <em>Study: " << html(study) << ".</em>";
-        for (size_t i = 1; i < rankings.size(); ++i)
-            o << " Region " << html(rankings[i].region) << ": " << html(sentence(rankings[i])) << ".";
-        o << "</li>\n";
-    }
-    o << "</ul></div>\n";
+      << " hardware threads; load average (1, 5, 15 min) when the report was written: " << html(loadAverage())
+      << ". The study's Figure 3 (generation time against N), made by <code>ci/main.sh</code> after this report: "
+         "<a href=\"figure3/figure3.png\" data-made-after=\"1\">figure3/figure3.png</a>, "
+         "<a href=\"figure3/summary.md\" data-made-after=\"1\">its tables</a>.</p></div>\n";
+    o << studyTableHtml(in);
+    o << "<h2 id=\"best\">Best pattern per scene at " << m.spp.back()
+      << " spp (whole image)</h2>\n<div class=\"wide\"><table><tr><th>scene</th><th>per sample (least MSE)</th><th>at "
+         "equal CPU time (least MSE·s)</th></tr>\n";
+    for (const auto& s : m.scenes)
+        o << "<tr><td><a href=\"#scene-" << safeName(s.name) << "\">" << html(s.name) << "</a></td><td>"
+          << bestPatternText(in, s, false) << "</td><td>" << bestPatternText(in, s, true) << "</td></tr>\n";
+    o << "</table></div>\n<p class=\"note\">The margin is the best pattern's error over the runner-up's, with its "
+         "verdict (EQUIVALENT: the two are within the margin of each other).</p>\n";
     return o.str();
 }
 
@@ -150,7 +270,7 @@ std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
       << "× its best seed's, with the trimmed mean RMS (lowest and highest seed dropped). FLIP: mean LDR-FLIP ± 95% "
          "(67 pixels per degree); spectrum: "
          "error power at 0.25–0.5 over below 0.125 cycles per pixel (1 white, above 1 blue).</p>\n"
-         "<table><tr><th>region</th><th>measure</th>";
+         "<div class=\"wide\"><table><tr><th>region</th><th>measure</th>";
     for (const auto& p : m.patterns) o << "<th>" << patternHeader(p) << "</th>";
     o << "</tr>\n";
     const auto rankings = rankingsOf(in, s, spp);
@@ -186,18 +306,35 @@ std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& s) {
         }
         o << "</tr>\n";
     }
-    o << "</table>\n";
+    o << "</table></div>\n";
 
     const uint32_t cropSpp = m.crop.spp ? m.crop.spp : m.spp.back();
     for (const auto& rg : s.regions) {
         o << "<h3>Region " << html(rg.name) << fmt(" (x %.2f–%.2f, y %.2f–%.2f)", rg.x0, rg.x1, rg.y0, rg.y1) << " at "
-          << cropSpp << " spp, seed " << m.seeds.front() << "</h3>\n<div class=\"grid\">";
+          << cropSpp << " spp, seed " << m.seeds.front() << "</h3>\n";
+        const std::string scaleFile = regionErrorMapFile(s.name, rg.name, "scale") + ".txt";
+        double scale = NAN;
+        if (std::ifstream f(in.reportDir + "/" + scaleFile); f) f >> scale;
+        o << "<p class=\"note\">Each crop magnified with nearest neighbour (click: the PNG at its own size, pixel "
+             "for pixel); beside it the error per pixel, sqrt(Σ<sub>rgb</sub>(I<sub>ref</sub> − I)²), in false colour "
+             "on one scale for all patterns: <img src=\""
+          << kErrorBarFile << "\" alt=\"error colour scale, dark blue 0 to yellow\" style=\"width:128px;height:10px\"> 0 to "
+          << fmt("%.3g", scale) << " (the largest pattern's 99th percentile).</p>\n<div class=\"maps\">";
         std::vector<std::string> columns = {"reference"};
         columns.insert(columns.end(), m.patterns.begin(), m.patterns.end());
-        for (const auto& c : columns)
-            o << "<figure><img class=\"crop\" src=\"" << regionCropFile(s.name, rg.name, c) << "\" alt=\""
-              << html(s.name + " " + rg.name + ", " + c) << "\"><figcaption>"
-              << (c == "reference" ? "reference" : patternHeader(c)) << "</figcaption></figure>";
+        for (const auto& c : columns) {
+            const std::string crop = regionCropFile(s.name, rg.name, c), map = regionErrorMapFile(s.name, rg.name, c);
+            const std::string exr = cellExrFile(s.name, c, cropSpp, m.seeds.front());
+            o << "<figure><a href=\"" << crop << "\"><img class=\"crop\" src=\"" << crop << "\" alt=\""
+              << html(s.name + " " + rg.name + ", " + c) << "\"></a>";
+            if (c != "reference")
+                o << "<a href=\"" << map << "\"><img class=\"crop\" src=\"" << map << "\" alt=\""
+                  << html("error map of " + c + ", " + rg.name) << "\"></a>";
+            o << "<figcaption>" << (c == "reference" ? std::string("reference") : patternHeader(c));
+            if (c != "reference" && fs::exists(fs::path(in.reportDir) / exr))
+                o << " · <a href=\"" << exr << "\">EXR</a>";
+            o << "</figcaption></figure>";
+        }
         o << "</div>\n";
     }
     return o.str();

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regions end to end: the equal-time and equal-spp claims are judged per region, the verdict headline and the
-# region crop grid are in the report, and every region crop is at least 128 px on its short side.
+# region crop grid are in the report, every region crop is at least 256 px on its long side, and every pattern's
+# crop has its error map beside it.
 # usage: regions_report.sh STIPPLE_VALIDATE MATRIX WORKDIR
 set -u
 validate=$1 matrix=$2 work=$3
@@ -14,14 +15,18 @@ bash "$here/expect_run.sh" 1 \
   -- "$validate" "$matrix" -o "$work/report" --cache "$work/cache" --threads 2 || exit 1
 ok=1
 grep -q 'class="headline"' "$work/report/index.html" || { echo "FAILED: no headline in index.html"; ok=0; }
-grep -q 'id="claims-total">3<' "$work/report/index.html" && grep -q 'id="claims-fail">1<' "$work/report/index.html" || { echo "FAILED: headline counts"; ok=0; }
+grep -q 'id="claims-total">4<' "$work/report/index.html" && grep -q 'id="claims-fail">1<' "$work/report/index.html" || { echo "FAILED: headline counts"; ok=0; }
 for c in reference independent stratified poisson; do
   f="$work/report/crops/cornell-region-box-shadows-$c.png"
   [ -f "$f" ] || { echo "FAILED: missing $f"; ok=0; continue; }
   grep -q "crops/cornell-region-box-shadows-$c.png" "$work/report/index.html" || { echo "FAILED: $c crop not linked"; ok=0; }
   # PNG IHDR: width and height are the big-endian words at bytes 16 and 20.
   read -r w h < <(od -An -tu1 -j16 -N8 "$f" | awk '{print $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}')
-  [ "$w" -ge 128 ] && [ "$h" -ge 128 ] || { echo "FAILED: $f is ${w}x${h}, under 128 px"; ok=0; }
+  [ "$w" -ge 256 ] || [ "$h" -ge 256 ] || { echo "FAILED: $f is ${w}x${h}, under 256 px on its long side"; ok=0; }
+  if [ "$c" != reference ]; then
+    m="crops/cornell-region-box-shadows-error-$c.png"
+    [ -f "$work/report/$m" ] && grep -q "$m" "$work/report/index.html" || { echo "FAILED: no error map $m"; ok=0; }
+  fi
 done
 grep -q '"region_mse": \[' "$work/report/results.json" || { echo "FAILED: results.json lacks region_mse"; ok=0; }
 [ $ok -eq 1 ] && echo "regions report: ok"

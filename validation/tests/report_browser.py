@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Opens a report folder's index.html in headless Chromium at 1280 px and checks what a reader would see:
-no element (with every <details> opened) wider than the viewport, every image loaded, the headline's claim
-counts equal to results.json's, and every link resolving inside the folder (no network, no absolute paths).
+"""Opens a report folder's index.html in headless Chromium at 800, 1280 and 1920 px and checks what a reader would
+see: no element (with every <details> opened) wider than the viewport, every image loaded, the headline's claim
+counts equal to results.json's, and every link resolving inside the folder (no network, no absolute paths; a link
+marked data-made-after names a file ci/main.sh writes after the report, e.g. Figure 3, and must stay inside it).
 
 usage: report_browser.py CHROMIUM REPORT_DIR WORKDIR
 """
@@ -19,6 +20,9 @@ window.addEventListener('load', () => {
   document.querySelectorAll('details').forEach(d => d.open = true);
   const vw = document.documentElement.clientWidth, wide = [];
   for (const el of document.querySelectorAll('body *')) {
+    // A table in a scrolling box (.wide) may be wider than the page; the box itself may not.
+    const box = el.closest('.wide');
+    if (box && box !== el) continue;
     const r = el.getBoundingClientRect();
     if (r.width > 0 && (r.right > vw + 0.5 || r.left < -0.5))
       wide.push(el.tagName + (el.id ? '#' + el.id : '') + ' right=' + Math.round(r.right));
@@ -48,7 +52,7 @@ class Links(HTMLParser):
             self.ids.add(a['id'])
         for key in ('href', 'src'):
             if key in a and a[key] is not None:
-                self.links.append((tag, a[key]))
+                self.links.append((tag, a[key], 'data-made-after' in a))
 
 
 def main():
@@ -60,36 +64,43 @@ def main():
     # Links: relative, inside the folder, existing; anchors name an id of the page.
     parser = Links()
     parser.feed(page)
-    for tag, link in parser.links:
+    for tag, link, made_after in parser.links:
         u = urlparse(link)
         if u.scheme or u.netloc or link.startswith('/'):
             failures.append(f'{tag} link leaves the folder: {link}')
         elif link.startswith('#'):
             if link[1:] not in parser.ids:
                 failures.append(f'anchor {link} names no element')
-        elif not os.path.exists(os.path.join(report, unquote(u.path))):
+        elif '..' in u.path.split('/'):
+            failures.append(f'{tag} link leaves the folder: {link}')
+        elif not made_after and not os.path.exists(os.path.join(report, unquote(u.path))):
             failures.append(f'{tag} link does not resolve: {link}')
 
     # The browser: a probe script in a copy of the page beside the original, so relative links still resolve.
     probe_page = os.path.join(report, 'index.browser-probe.html')
     open(probe_page, 'w', encoding='utf-8').write(page.replace('</body>', PROBE + '</body>'))
-    cmd = [chromium, '--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars', '--no-first-run',
-           '--user-data-dir=' + os.path.join(work, 'chromium-profile'), '--window-size=1280,900',
-           '--virtual-time-budget=10000', '--dump-dom', 'file://' + os.path.abspath(probe_page)]
-    dom = subprocess.run(cmd, capture_output=True, text=True, timeout=120).stdout
+    probes = []
+    for width in (800, 1280, 1920):
+        cmd = [chromium, '--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars', '--no-first-run',
+               '--user-data-dir=' + os.path.join(work, 'chromium-profile'), f'--window-size={width},900',
+               '--virtual-time-budget=10000', '--dump-dom', 'file://' + os.path.abspath(probe_page)]
+        dom = subprocess.run(cmd, capture_output=True, text=True, timeout=120).stdout
+        m = re.search(r'<pre id="browser-probe">(.*?)</pre>', dom, re.S)
+        if not m:
+            os.remove(probe_page)
+            print(f'FAILED: the probe did not run at {width} px (no result in the DOM)')
+            return 1
+        probe = json.loads(html.unescape(m.group(1)))
+        probes.append(probe)
+        print(f"viewport {probe['viewport']} px, document {probe['scrollWidth']} px wide, {len(probe['images'])} images")
+        if probe['viewport'] != width:
+            failures.append(f"viewport is {probe['viewport']} px, not {width}")
+        if probe['scrollWidth'] > probe['viewport']:
+            failures.append(f"horizontal overflow at {width} px: document {probe['scrollWidth']} px")
+        for w in probe['wide']:
+            failures.append(f'wider than the {width} px viewport: ' + w)
     os.remove(probe_page)
-    m = re.search(r'<pre id="browser-probe">(.*?)</pre>', dom, re.S)
-    if not m:
-        print('FAILED: the probe did not run (no result in the DOM)')
-        return 1
-    probe = json.loads(html.unescape(m.group(1)))
-    print(f"viewport {probe['viewport']} px, document {probe['scrollWidth']} px wide, {len(probe['images'])} images")
-    if probe['viewport'] != 1280:
-        failures.append(f"viewport is {probe['viewport']} px, not 1280")
-    if probe['scrollWidth'] > probe['viewport']:
-        failures.append(f"horizontal overflow: document {probe['scrollWidth']} px in a {probe['viewport']} px viewport")
-    for w in probe['wide']:
-        failures.append('wider than the viewport: ' + w)
+    probe = probes[1]
     for i in probe['images']:
         if not i['loaded']:
             failures.append(f"image not loaded: {i['src']}")

@@ -1,0 +1,42 @@
+// The compare check: pattern A against pattern B per scene and region, per sample (equal spp) or per cost (equal
+// CPU seconds), on MSE or mean FLIP, judged with equivalence.h: EQUIVALENT (inside the margin), BETTER, WORSE or
+// NOT SEPARATED, then against what the check expects (PASS / FAIL / NOT SEPARATED).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "checks.h"
+#include "equivalence.h"
+#include "results.h"
+
+namespace stipple::validation {
+
+// Whether a pattern's pixels are sampled independently of each other. The shim's blue-noise flag shares one set
+// across the pixels of a kBlueNoiseTilePixels-square tile (tiles are keyed apart), so its units are tiles.
+bool pixelsIndependent(const std::string& pattern);
+inline constexpr int kBlueNoiseTilePixels = 64;
+
+// A pattern's error at one spp over its seeds (rows of results.json with block lists): region < 0 the whole image,
+// else the scene's region'th region. flip: mean FLIP (no floor), else the MSE with the reference's floor removed.
+ErrorEstimate patternError(const std::vector<ResultRow>& rows, const MatrixScene& scene, const std::string& pattern,
+                           uint32_t spp, int region, bool flip, double floor);
+
+// The paired per-seed log ratio of A's CPU seconds to B's at one spp (renders of a seed ran back to back).
+LogShift cpuTimeShift(const std::vector<ResultRow>& rows, const std::string& scene, const std::string& a,
+                      const std::string& b, uint32_t spp);
+
+// A's error over B's (region < 0: whole image); equal time multiplies by the CPU-time ratio (MSE · s).
+Comparison comparePatterns(const std::vector<ResultRow>& rows, const MatrixScene& scene, const std::string& a,
+                           const std::string& b, uint32_t spp, int region, bool flip, bool equalTime,
+                           const Margin& margin = {});
+
+CheckStatus statusFor(Expectation expect, const Comparison& c);
+const char* expectationName(Expectation e);
+
+void evaluateCompare(const Check& check, const Matrix& matrix, const std::vector<ResultRow>& rows,
+                     CheckOutcome& outcome);
+
+Json verdictsJson(const std::vector<VerdictRow>& verdicts);
+
+} // namespace stipple::validation
