@@ -36,6 +36,8 @@ enum class HashDomain : uint64_t {
     PoissonCache = 0xcac4e5e7c0ffee06ull,
     Sobol = 0x50b01000c0ffee09ull,
     Pmj02 = 0x9a1020c0c0ffee0aull,
+    Lattice = 0x1a771ce0c0ffee0cull,
+    Halton = 0x4a170700c0ffee0dull,
     BlueNoiseTile = 0xb1e7111ec0ffee0bull, // XORed onto a pattern's domain for the keys of blue-noise tiles
 };
 

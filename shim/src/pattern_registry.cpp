@@ -13,6 +13,8 @@ extern const PatternOps kPoissonPattern;
 extern const PatternOps kPoissonSeedPattern;
 extern const PatternOps kSobolPattern;
 extern const PatternOps kPmj02Pattern;
+extern const PatternOps kLatticePattern;
+extern const PatternOps kHaltonPattern;
 
 namespace {
 
@@ -24,6 +26,8 @@ constexpr const PatternOps* kPatterns[] = {
     &kPoissonSeedPattern, // STIPPLE_PATTERN_POISSON_SEED
     &kSobolPattern,       // STIPPLE_PATTERN_SOBOL
     &kPmj02Pattern,       // STIPPLE_PATTERN_PMJ02
+    &kLatticePattern,     // STIPPLE_PATTERN_LATTICE
+    &kHaltonPattern,      // STIPPLE_PATTERN_HALTON
 };
 static_assert(std::size(kPatterns) == STIPPLE_PATTERN_COUNT, "one entry per public pattern id, in id order");
 

@@ -64,7 +64,7 @@ BOOST_AUTO_TEST_CASE(version_and_pattern_names) {
     uint32_t pattern = 99;
     BOOST_CHECK_EQUAL(stipple_pattern_from_name("poisson-seed", &pattern), STIPPLE_OK);
     BOOST_CHECK_EQUAL(pattern, STIPPLE_PATTERN_POISSON_SEED);
-    expectError(stipple_pattern_from_name("halton", &pattern), STIPPLE_ERROR_INVALID_ARGUMENT, "halton");
+    expectError(stipple_pattern_from_name("hammersley", &pattern), STIPPLE_ERROR_INVALID_ARGUMENT, "hammersley");
     expectError(stipple_pattern_from_name("Stratified", &pattern), STIPPLE_ERROR_INVALID_ARGUMENT, "name");
     expectError(stipple_pattern_from_name(nullptr, &pattern), STIPPLE_ERROR_NULL_ARGUMENT, "name");
     expectError(stipple_pattern_from_name("poisson", nullptr), STIPPLE_ERROR_NULL_ARGUMENT, "out_pattern");

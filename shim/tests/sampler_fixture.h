@@ -86,7 +86,8 @@ inline const char* patternName(uint32_t pattern) {
 }
 
 constexpr uint32_t kAllPatterns[] = {STIPPLE_PATTERN_INDEPENDENT,  STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON,
-                                     STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,      STIPPLE_PATTERN_PMJ02};
+                                     STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,      STIPPLE_PATTERN_PMJ02,
+                                     STIPPLE_PATTERN_LATTICE,      STIPPLE_PATTERN_HALTON};
 constexpr int kPatternCount = int(sizeof kAllPatterns / sizeof kAllPatterns[0]);
 
 } // namespace stipple::test

@@ -21,7 +21,8 @@ namespace {
 
 // poisson-seed generates a whole set per value (its deliberate cost): it is in the equality test below only.
 constexpr uint32_t kStreamPatterns[] = {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED,
-                                        STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02};
+                                        STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02,
+                                        STIPPLE_PATTERN_LATTICE, STIPPLE_PATTERN_HALTON};
 constexpr int kStreamPatternCount = int(sizeof kStreamPatterns / sizeof kStreamPatterns[0]);
 
 SamplerPtr makeFlaggedStreams(uint32_t pattern, uint32_t n, uint64_t seed, uint32_t flags,

@@ -89,7 +89,9 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, nested uniform), padded per dimension */
 #define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points; 3D: z
                                           * is stratified alone, not with x or y (see README) */
-#define STIPPLE_PATTERN_COUNT 6u
+#define STIPPLE_PATTERN_LATTICE 6u      /* randomly shifted rank-1 lattice sequence, extensible in base 2 */
+#define STIPPLE_PATTERN_HALTON 7u       /* scrambled Halton (bases 2, 3, 5 per set), padded per dimension */
+#define STIPPLE_PATTERN_COUNT 8u
 
 /* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
 /* Screen-space blue noise: neighbouring pixels' sets are built together so that the per-pixel error is spread

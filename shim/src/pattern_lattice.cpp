@@ -1,0 +1,119 @@
+// pattern_lattice.cpp — a randomly shifted rank-1 lattice sequence, extensible in base 2.
+//
+// Point j of the sequence is frac(phi2(j) * z + u) per axis: phi2 is the base-2 radical inverse (the reversed
+// 32 bits of j as a binary fraction), z = (1, 364981, 245389) the generating vector of Hickernell, Kritzer, Kuo
+// and Nuyens ("Weighted compound integration rules with higher order convergence for all N", 2012; OpenQMC's
+// lattice uses it too), u a random shift per set. In 32-bit fixed point the point is z * reverse(j) + u mod 2^32,
+// so the first 2^m points are exactly the lattice {k z / 2^m} shifted by u, and every prefix of 2^j points of the
+// sequence is again a shifted lattice: the pattern is progressive in N.
+//
+// Sample index i of a set of M points (L = 2^m >= M) lies in block b = i / N; its sequence index is
+//     ((blockBase + b) << m) | (nestedUniformScramble(i mod N, indexSeed) mod L),
+// as sobol's: the index shuffle maps every prefix [0, 2^j) onto an aligned run of 2^j sequence indices, and the
+// blocks continue the sequence. indexSeed and the shifts are hashed from the set key, so the dimensions of a pixel
+// are decorrelated (padding). The shift makes every point uniform on the unit cube.
+//
+// Strengths and weaknesses (shim/POINTSETS.md): a lattice integrates smooth PERIODIC integrands at a high rate and
+// spaces its points evenly (large minimum distance); on non-periodic integrands a shifted lattice has a seam at the
+// shift, and its 1D projections are evenly spaced grids with one common offset, so a 1D ramp sees the error of a
+// single jittered offset.
+#include "owen_scrambling.h"
+#include "pattern_registry.h"
+
+namespace stipple::detail {
+
+namespace {
+
+constexpr uint32_t kLatticeVector[3] = {1u, 364981u, 245389u};
+
+struct LatticeSet {
+    uint32_t indexSeed;
+    uint32_t shift[3];
+    uint32_t high; // (blockBase + block) << m: the block's part of the sequence index
+    uint32_t lowMask;
+};
+
+LatticeSet latticeSet(const SetKey& set, const Dimension& dim) {
+    const uint64_t h0 = hashAt(set.key, 0), h1 = hashAt(set.key, 1);
+    const uint32_t bits = dim.log2Length >= 32 ? 32 : dim.log2Length;
+    return LatticeSet{static_cast<uint32_t>(h0),
+                      {static_cast<uint32_t>(h0 >> 32), static_cast<uint32_t>(h1), static_cast<uint32_t>(h1 >> 32)},
+                      bits >= 32 ? 0u : set.block << bits,
+                      bits >= 32 ? ~0u : (1u << bits) - 1u};
+}
+
+template <uint32_t Arity>
+[[gnu::always_inline]] inline void latticePoint(const LatticeSet& s, uint32_t r, float* out) {
+    const uint32_t phi = reverseBits32(s.high | (nestedUniformScramble(r, s.indexSeed) & s.lowMask));
+    for (uint32_t c = 0; c < Arity; ++c) out[c] = fixedToUnitFloat(kLatticeVector[c] * phi + s.shift[c]);
+}
+
+template <uint32_t Arity>
+[[gnu::always_inline]] inline void latticePoints(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
+    for (uint32_t i = 0; i < count; ++i) latticePoint<Arity>(s, first + i, out + size_t(i) * Arity);
+}
+
+template <uint32_t Arity>
+void latticeBaseline(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
+    latticePoints<Arity>(s, first, count, out);
+}
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX2]] void latticeAvx2(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
+    latticePoints<Arity>(s, first, count, out);
+}
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void latticeAvx512(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
+    latticePoints<Arity>(s, first, count, out);
+}
+#endif
+
+template <BatchIsa Isa, uint32_t Arity>
+void latticeBatch(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+    if constexpr (Isa == BatchIsa::Avx512) return latticeAvx512<Arity>(s, first, count, out);
+    if constexpr (Isa == BatchIsa::Avx2) return latticeAvx2<Arity>(s, first, count, out);
+#endif
+    return latticeBaseline<Arity>(s, first, count, out);
+}
+
+template <BatchIsa Isa>
+void fillLattice(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    const LatticeSet s = latticeSet(set, dim);
+    switch (dim.arity) {
+    case 1: return latticeBatch<Isa, 1>(s, first, count, out);
+    case 2: return latticeBatch<Isa, 2>(s, first, count, out);
+    default: return latticeBatch<Isa, 3>(s, first, count, out);
+    }
+}
+
+void pointLattice(const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
+    const LatticeSet s = latticeSet(set, dim);
+    switch (dim.arity) {
+    case 1: return latticePoint<1>(s, p, out);
+    case 2: return latticePoint<2>(s, p, out);
+    default: return latticePoint<3>(s, p, out);
+    }
+}
+
+} // namespace
+
+// Blocks continue the sequence; with the blue-noise flag the pixels of a tile share one sequence and each shifts
+// it by its lattice-map shift (blue_noise.h), like sobol.
+extern const PatternOps kLatticePattern;
+constinit const PatternOps kLatticePattern{
+    .name = "lattice",
+    .domain = HashDomain::Lattice,
+    .blockKeying = BlockKeying::Sequence,
+    .blueNoise = BlueNoiseMode::TileShift,
+    .latticeUse = LatticeUse::Shift,
+    .limits = {},
+    .prepare = nullptr,
+    .prepareStreamsOnFirstUse = false,
+    .strata = nullptr,
+    .point = pointLattice,
+    .fill = {fillLattice<BatchIsa::Baseline>, fillLattice<BatchIsa::Avx2>, fillLattice<BatchIsa::Avx512>},
+    .fillStrata = nullptr,
+};
+
+} // namespace stipple::detail
