@@ -55,7 +55,8 @@ struct Options {
     int threads = std::max(1u, std::thread::hardware_concurrency());
     bool quick = false;
     bool blue = true;
-    std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"};
+    std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed",
+                                         "sobol",       "pmj02",      "lattice", "halton"};
     std::vector<std::string> sections = {"battery", "nested", "prefix"};
 };
 
@@ -276,6 +277,10 @@ std::string theoryRate(const std::string& pattern, IntegrandClass cls, int d) {
         if (cls == IntegrandClass::Edge) return std::snprintf(buf, sizeof buf, "%.2f", -1 - 1.0 / d), buf;
         if (pattern == "pmj02" && d == 3) return std::snprintf(buf, sizeof buf, "%.2f", -1 - 2.0 / d), buf;
         return "-3 (logs)";
+    }
+    if (pattern == "lattice" || pattern == "halton") { // randomised QMC without the Owen rate on non-periodic f
+        if (cls == IntegrandClass::Edge) return std::snprintf(buf, sizeof buf, "%.2f", -1 - 1.0 / d), buf;
+        return "-2 (logs)";
     }
     if (pattern == "stratified") {
         if (cls == IntegrandClass::Edge) return std::snprintf(buf, sizeof buf, "%.2f", -1 - 1.0 / d), buf;

@@ -36,7 +36,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kAllPatterns[] = {"independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"};
+const char* kAllPatterns[] = {"independent", "stratified", "poisson", "poisson-seed",
+                              "sobol",       "pmj02",      "lattice", "halton"};
 
 struct Integrand {
     const char* name;

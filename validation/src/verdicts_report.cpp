@@ -81,7 +81,8 @@ std::string patternColor(const std::string& pattern) {
     static const std::pair<const char*, const char*> colors[] = {
         {"independent", "#E69F00"},  {"stratified", "#0072B2"}, {"poisson", "#009E73"},
         {"poisson-seed", "#CC79A7"}, {"sobol", "#D55E00"},      {"pmj02", "#56B4E9"},
-        {"sobol+blue-noise", "#000000"}, {"stratified+blue-noise", "#999933"}}; // black; Tol's olive
+        {"sobol+blue-noise", "#000000"}, {"stratified+blue-noise", "#999933"}, // black; Tol's olive
+        {"lattice", "#44AA99"},          {"halton", "#882255"}};                // Tol's teal and wine
     for (const auto& [name, color] : colors)
         if (pattern == name) return color;
     return "#000000";
