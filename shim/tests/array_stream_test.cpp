@@ -87,7 +87,8 @@ BOOST_AUTO_TEST_CASE(stratified_over_n_times_k) {
 }
 
 // sobol and pmj02: an array's N * k points of a block are a (0, m, 2)-net when N * k = 2^m (the plain patterns: the
-// blue-noise flag's toroidal shift does not keep nets).
+// blue-noise flag's toroidal shift does not keep nets). sobol: every block (aligned blocks of a (0,2)-sequence);
+// pmj02 promises prefixes: the first 1, 2 and 8 blocks together (its tables hold 8 blocks of a set's sequence).
 BOOST_AUTO_TEST_CASE(nets_over_n_times_k) {
     for (const char* pattern : {"sobol", "pmj02"})
         for (uint32_t n : {4u, 16u, 64u})
@@ -95,10 +96,17 @@ BOOST_AUTO_TEST_CASE(nets_over_n_times_k) {
                 const Sampler s = makeSampler(pattern, n, 3);
                 int m = 0;
                 while ((1u << m) < n * k) ++m;
-                for (uint32_t block : {0u, 1u, 5u})
-                    for (int pixel = 0; pixel < 4; ++pixel)
-                        BOOST_REQUIRE_MESSAGE(isNet(arrayFill(s, Pixel{pixel, -pixel}, block * n, n, 2, 2, k), m),
-                                              pattern << " N " << n << " k " << k << " block " << block);
+                const bool sobol = std::string(pattern) == "sobol";
+                for (uint32_t b : {0u, 1u, 5u})
+                    for (int pixel = 0; pixel < 4; ++pixel) {
+                        // sobol: block b alone; pmj02: the first 1, 2 or 8 blocks (b = 0, 1, 5 -> 1, 2, 8 blocks)
+                        const uint32_t first = sobol ? b * n : 0, blocks = sobol ? 1 : (b == 0 ? 1 : b == 1 ? 2 : 8);
+                        const int log2Blocks = blocks == 1 ? 0 : blocks == 2 ? 1 : 3;
+                        BOOST_REQUIRE_MESSAGE(
+                            isNet(arrayFill(s, Pixel{pixel, -pixel}, first, blocks * n, 2, 2, k), m + log2Blocks),
+                            pattern << " N " << n << " k " << k << (sobol ? " block " : " blocks 0.. ")
+                                    << (sobol ? b : blocks - 1));
+                    }
             }
 }
 

@@ -1,13 +1,16 @@
-// sampler_fixture.h — helpers shared by the shim tests: build samplers through the C API, read whole pixels.
+// sampler_fixture.h — helpers shared by the shim tests: build samplers through the C++ kit, read whole pixels
+// through the C API.
 #pragma once
 
 #include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include <boost/test/unit_test.hpp>
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stipple::test {
@@ -27,10 +30,17 @@ inline stipple_dimension_desc toDesc(const DimensionSpec& spec) {
     return d;
 }
 
-struct SamplerDeleter {
-    void operator()(stipple_sampler_t* s) const { stipple_sampler_release(s); }
+// A test's sampler: the C++ kit's owner (stipple.hpp), so the tests create and release samplers as hosts do;
+// get() is the C handle the tests call the ABI with.
+class SamplerPtr {
+public:
+    explicit SamplerPtr(stipple::Sampler sampler) : sampler_(std::move(sampler)) {}
+    stipple_sampler get() const { return sampler_.handle(); }
+    const stipple::Sampler& kit() const { return sampler_; }
+
+private:
+    stipple::Sampler sampler_;
 };
-using SamplerPtr = std::unique_ptr<stipple_sampler_t, SamplerDeleter>;
 
 inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const std::vector<DimensionSpec>& dims,
                               uint32_t flags = 0) {
@@ -42,12 +52,12 @@ inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const
     desc.samples_per_pixel = n;
     desc.dimension_count = static_cast<uint32_t>(descs.size());
     desc.seed = seed;
-    desc.dimensions = descs.data();
+    desc.dimensions = descs.empty() ? nullptr : descs.data();
     desc.flags = flags;
-    stipple_sampler s = nullptr;
-    const stipple_status status = stipple_sampler_create(&desc, &s);
-    BOOST_REQUIRE_MESSAGE(status == STIPPLE_OK, "stipple_sampler_create: " << stipple_last_error_message());
-    return SamplerPtr(s);
+    stipple::Sampler sampler;
+    const stipple::Status status = stipple::Sampler::create(sampler, desc);
+    BOOST_REQUIRE_MESSAGE(status.ok(), "stipple_sampler_create: " << status.message());
+    return SamplerPtr(std::move(sampler));
 }
 
 // One dimension of `arity` (one point per sample), created with `flags`.

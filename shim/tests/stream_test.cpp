@@ -27,20 +27,7 @@ constexpr int kStreamPatternCount = int(sizeof kStreamPatterns / sizeof kStreamP
 
 SamplerPtr makeFlaggedStreams(uint32_t pattern, uint32_t n, uint64_t seed, uint32_t flags,
                               const std::vector<DimensionSpec>& dims) {
-    std::vector<stipple_dimension_desc> descs;
-    for (const auto& d : dims) descs.push_back(toDesc(d));
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = static_cast<uint32_t>(descs.size());
-    desc.seed = seed;
-    desc.flags = flags;
-    desc.dimensions = descs.empty() ? nullptr : descs.data();
-    stipple_sampler s = nullptr;
-    BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK,
-                          "stipple_sampler_create: " << stipple_last_error_message());
-    return SamplerPtr(s);
+    return makeSampler(pattern, n, seed, dims, flags);
 }
 
 std::array<float, 3> stream(stipple_sampler s, uint32_t x, uint32_t y, uint32_t i, uint32_t d, uint32_t arity) {

@@ -102,8 +102,8 @@ BOOST_AUTO_TEST_CASE(unknown_names_are_named) {
     Fixture f;
     expectError(f, replaced(good, "scenes/mis.yaml", "scenes/nope.yaml"),
                 {f.path() + ":6:5", "unknown scene file 'scenes/nope.yaml'"});
-    expectError(f, replaced(good, "[independent, stratified, poisson]", "[independent, halton]"),
-                {f.path() + ":7:", "unknown pattern 'halton'", "poisson-seed"});
+    expectError(f, replaced(good, "[independent, stratified, poisson]", "[independent, hammersley]"),
+                {f.path() + ":7:", "unknown pattern 'hammersley'", "poisson-seed"});
     expectError(f, replaced(good, "type: slope", "type: variance"),
                 {f.path() + ":13:13", "unknown check type 'variance'"});
     expectError(f, replaced(good, "scene: veach", "scene: cornell"),

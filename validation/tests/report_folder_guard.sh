@@ -45,7 +45,7 @@ run -o "$work/s1" --shard 1/2 || { cat "$work/log"; die "shard 1"; }
 run -o "$work/s2" --shard 2/2 || { cat "$work/log"; die "shard 2"; }
 [ -f "$work/s1/.stipple-report" ] || fail "a report folder lacks its .stipple-report marker"
 # A report of an earlier version (no marker, exactly a report's files) is replaced; one file more and it is not.
-cp -r "$work/s1" "$work/old" && rm "$work/old/.stipple-report"
+cp -r "$work/s1" "$work/old" && rm -rf "$work/old/.stipple-report" "$work/old/exr" # 1.1 wrote no exr/
 run -o "$work/old" --shard 1/2 || { cat "$work/log"; fail "a report without the marker (an earlier version's) was refused"; }
 [ -f "$work/old/.stipple-report" ] || fail "the earlier report was not replaced"
 cp -r "$work/s1" "$work/old2" && rm "$work/old2/.stipple-report" && echo mine > "$work/old2/crops/notes.txt"
