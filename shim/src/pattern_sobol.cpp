@@ -23,12 +23,23 @@ namespace stipple::detail {
 
 namespace {
 
+// The seed of a coordinate's deep digits (deepOwenScrambleReversed), derived from its scramble seed.
+constexpr uint32_t deepSeed(uint32_t scramble) { return mixBits32(scramble ^ 0x5b0b01deu); }
+
+// A coordinate's Owen scramble, on and to reversed digits (z = reverseBits32 of the Sobol' fraction): Laine-Karras
+// (Vegdahl's hash) for every digit, completed below the set's level (log2 of its power-of-two length L, where each point
+// of a block has an elementary interval of its own) by deepOwenScrambleReversed. One bit reversal, at the end.
+inline float sobolScrambleToFloat(uint32_t z, uint32_t seed, uint32_t deep, uint32_t level) {
+    return fixedToUnitFloat(reverseBits32(deepOwenScrambleReversed(vegdahlPermutation(z, seed), level, deep)));
+}
+
 inline void sobolPoint(const SobolSet& set, const Dimension& dim, uint32_t r, float* out) {
     const uint32_t lowMask = dim.log2Length == 32 ? ~0u : (1u << dim.log2Length) - 1u;
     const uint32_t index = (dim.log2Length >= 32 ? 0u : set.blockBase << dim.log2Length) |
                            (nestedUniformScramble(r, set.indexSeed) & lowMask);
     for (uint32_t c = 0; c < dim.arity; ++c)
-        out[c] = fixedToUnitFloat(nestedUniformScramble(sobolSample(index, c), set.scramble[c]));
+        out[c] = sobolScrambleToFloat(sobolSampleReversed(index, c), set.scramble[c], deepSeed(set.scramble[c]),
+                                      dim.log2Length);
 }
 
 } // namespace
@@ -58,8 +69,9 @@ template <uint32_t Arity>
     const uint32_t lowMask = bits == 32 ? ~0u : (1u << bits) - 1u;
     const uint32_t high = bits >= 32 ? 0u : set.blockBase << bits;
     const uint32_t indexSeed = set.indexSeed;
-    uint32_t highPart[3], scramble[3];
-    for (uint32_t c = 0; c < Arity; ++c) highPart[c] = sobolSample(high, c), scramble[c] = set.scramble[c];
+    uint32_t highPart[3], scramble[3], deep[3];
+    for (uint32_t c = 0; c < Arity; ++c)
+        highPart[c] = sobolSampleReversed(high, c), scramble[c] = set.scramble[c], deep[c] = deepSeed(set.scramble[c]);
     alignas(64) uint32_t index[kChunk], v[kChunk];
     for (uint32_t base = 0; base < count; base += kChunk) {
         const uint32_t n = count - base < kChunk ? count - base : kChunk;
@@ -67,16 +79,16 @@ template <uint32_t Arity>
         float* o = out + size_t(base) * Arity;
         for (uint32_t c = 0; c < Arity; ++c) {
             if (c == 0) {
-                for (uint32_t i = 0; i < n; ++i) v[i] = reverseBits32(index[i]);
+                for (uint32_t i = 0; i < n; ++i) v[i] = index[i];
             } else {
                 for (uint32_t i = 0; i < n; ++i) v[i] = 0;
                 for (uint32_t j = 0; j < bits; ++j) {
-                    const uint32_t column = kSobolMatrices[c][j];
+                    const uint32_t column = kSobolMatricesReversed[c][j];
                     for (uint32_t i = 0; i < n; ++i) v[i] ^= (0u - ((index[i] >> j) & 1u)) & column;
                 }
             }
             for (uint32_t i = 0; i < n; ++i)
-                o[size_t(i) * Arity + c] = fixedToUnitFloat(nestedUniformScramble(v[i] ^ highPart[c], scramble[c]));
+                o[size_t(i) * Arity + c] = sobolScrambleToFloat(v[i] ^ highPart[c], scramble[c], deep[c], bits);
         }
     }
 }

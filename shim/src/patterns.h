@@ -61,8 +61,9 @@ template <BatchIsa Isa>
 void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out);
 
-// pmj02: the key is the block's (Sampler: hashCombine(set key, block) for every block, block 0 included).
-void fillPmj02(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
-void pointPmj02(uint64_t key, const Dimension& dim, uint32_t p, float* out);
+// pmj02: the key is the set's (before any block); block b continues the set's sequence (pattern_pmj02.cpp).
+template <BatchIsa Isa>
+void fillPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t p, float* out);
 
 } // namespace stipple::detail

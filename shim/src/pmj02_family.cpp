@@ -2,6 +2,7 @@
 #include "pmj02_family.h"
 
 #include "hash.h"
+#include "owen_scrambling.h"
 
 #include <algorithm>
 #include <map>
@@ -18,14 +19,17 @@ uint32_t Pmj02Family::setCountFor(uint32_t log2Length) {
 }
 
 Pmj02Family::Pmj02Family(uint32_t log2Length, uint32_t setCount)
-    : log2Length_(log2Length), setCount_(setCount), slots_(new Slot[setCount]) {}
+    : log2Length_(log2Length), storedLog2Length_(std::min(kMaxLog2Length, log2Length + kContinuationDoublings)),
+      setCount_(setCount), slots_(new Slot[setCount]) {}
 
 const FixedPoint2* Pmj02Family::sequence(uint32_t j) const {
     Slot& slot = slots_[j];
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_acquire)) return data;
     std::lock_guard<std::mutex> lock(slot.mutex);
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_relaxed)) return data;
-    slot.points = generatePmj02(log2Length_, hashCombine(hashCombine(mix64(kPmj02FamilyDomain), log2Length_), j));
+    slot.points =
+        generatePmj02(storedLog2Length_, hashCombine(hashCombine(mix64(kPmj02FamilyDomain), storedLog2Length_), j));
+    for (FixedPoint2& p : slot.points) p = {reverseBits32(p.x), reverseBits32(p.y)}; // the order the scramble takes
     slot.ready.store(slot.points.data(), std::memory_order_release);
     return slot.points.data();
 }
@@ -35,7 +39,8 @@ std::shared_ptr<const Pmj02Family> Pmj02Family::acquire(uint32_t log2Length) {
     static std::map<uint32_t, std::weak_ptr<const Pmj02Family>> families;
     std::lock_guard<std::mutex> lock(mutex);
     if (auto family = families[log2Length].lock()) return family;
-    auto family = std::make_shared<const Pmj02Family>(log2Length, setCountFor(log2Length));
+    auto family = std::make_shared<const Pmj02Family>(
+        log2Length, setCountFor(std::min(kMaxLog2Length, log2Length + kContinuationDoublings)));
     families[log2Length] = family;
     return family;
 }

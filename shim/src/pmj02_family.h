@@ -1,7 +1,10 @@
 // pmj02_family.h — the cached pmj02 sequences of one length, shared by every sampler that serves them.
 //
-// A family holds setCount sequences of 2^log2Length points; sequence j is generated lazily on first use from a
-// seed that depends on (log2Length, j) only, so the content never depends on which thread generated it.
+// A family serves sets of up to 2^log2Length points. It holds setCount sequences of 2^storedLog2Length points,
+// up to 8 times longer (at most 2^kMaxLog2Length), so that the blocks of a sampler past N continue one sequence
+// (pmj02 sequences are progressive: every prefix of a power-of-two length is itself a pmj02 set). Sequence j is
+// generated lazily on first use from a seed that depends on (storedLog2Length, j) only, so the content never
+// depends on which thread generated it.
 // Families live as long as a sampler holds them (the registry keeps weak references).
 #pragma once
 
@@ -19,13 +22,17 @@ class Pmj02Family {
 public:
     // Longest sequence served: generation is ~0.2 s at 2^16 points and grows faster than linearly.
     static constexpr uint32_t kMaxLog2Length = 16;
+    // Doublings stored past a set's length, for the blocks past N (8 blocks of a power-of-two set).
+    static constexpr uint32_t kContinuationDoublings = 3;
     // Sequences per family: as many as fit in 2 MiB, between 2 and 32.
     static uint32_t setCountFor(uint32_t log2Length);
 
     Pmj02Family(uint32_t log2Length, uint32_t setCount);
 
     uint32_t log2Length() const { return log2Length_; }
+    uint32_t storedLog2Length() const { return storedLog2Length_; }
     uint32_t setCount() const { return setCount_; }
+    // Sequence j with each coordinate's bits reversed (the digit order the Laine-Karras scramble takes).
     const FixedPoint2* sequence(uint32_t j) const;
 
     // The shared family for this length (created on first request).
@@ -37,7 +44,7 @@ private:
         std::atomic<const FixedPoint2*> ready{nullptr};
         std::vector<FixedPoint2> points;
     };
-    uint32_t log2Length_, setCount_;
+    uint32_t log2Length_, storedLog2Length_, setCount_;
     std::unique_ptr<Slot[]> slots_;
 };
 

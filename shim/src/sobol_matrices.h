@@ -46,6 +46,22 @@ inline constexpr std::array<std::array<uint32_t, 32>, 3> kSobolMatrices = [] {
     return matrices;
 }();
 
+// The same columns bit-reversed: a coordinate's digits in the order the Laine-Karras hash takes them.
+inline constexpr std::array<std::array<uint32_t, 32>, 3> kSobolMatricesReversed = [] {
+    std::array<std::array<uint32_t, 32>, 3> matrices{};
+    for (uint32_t d = 0; d < 3; ++d)
+        for (uint32_t j = 0; j < 32; ++j) matrices[d][j] = reverseBits32(kSobolMatrices[d][j]);
+    return matrices;
+}();
+
+// reverseBits32(sobolSample(index, d)) without the reversal: dimension 0 is the index itself.
+constexpr uint32_t sobolSampleReversed(uint32_t index, uint32_t d) {
+    if (d == 0) return index;
+    uint32_t result = 0;
+    for (; index != 0; index &= index - 1) result ^= kSobolMatricesReversed[d][std::countr_zero(index)];
+    return result;
+}
+
 // The index-th point's coordinate in dimension d (0..2) as a 32-bit fraction.
 // Dimension 0 is the bit reversal; the others XOR the columns of the index's set bits.
 constexpr uint32_t sobolSample(uint32_t index, uint32_t d) {
