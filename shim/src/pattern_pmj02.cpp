@@ -155,8 +155,8 @@ constinit const PatternOps kPmj02Pattern{
     .name = "pmj02",
     .domain = HashDomain::Pmj02,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {.maxArity = 3, .maxSetSize = 1u << Pmj02Family::kMaxLog2Length},
     .prepare = [](Dimension& dim) { dim.pmj02 = Pmj02Family::acquire(dim.log2Length); },
     .prepareStreamsOnFirstUse = false, // a family generates its sequences on first use
