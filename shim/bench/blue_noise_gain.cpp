@@ -188,12 +188,18 @@ int main(int argc, char** argv) {
             if (i + 1 >= argc) fail("missing value after " + a);
             return argv[++i];
         };
-        if (a == "-o") outDir = value();
-        else if (a == "--images") images = std::atoi(value().c_str());
-        else if (a == "--size") size = std::atoi(value().c_str());
-        else if (a == "--boot") boot = std::atoi(value().c_str());
-        else if (a == "--threads") threads = std::atoi(value().c_str());
-        else if (a == "--patterns") patterns = splitList(value());
+        if (a == "-o")
+            outDir = value();
+        else if (a == "--images")
+            images = std::atoi(value().c_str());
+        else if (a == "--size")
+            size = std::atoi(value().c_str());
+        else if (a == "--boot")
+            boot = std::atoi(value().c_str());
+        else if (a == "--threads")
+            threads = std::atoi(value().c_str());
+        else if (a == "--patterns")
+            patterns = splitList(value());
         else if (a == "--ns") {
             ns.clear();
             for (const std::string& s : splitList(value())) ns.push_back(uint32_t(std::atoi(s.c_str())));
@@ -216,7 +222,8 @@ int main(int argc, char** argv) {
         if (stipple_pattern_from_name(name.c_str(), &id) != STIPPLE_OK) fail("unknown pattern \"" + name + "\"");
         md << "### " << name << "\n\n";
         std::string refusal;
-        if (stipple_sampler s = makeSampler(id, ns[0], kSeed, true, &refusal)) stipple_sampler_release(s);
+        if (stipple_sampler s = makeSampler(id, ns[0], kSeed, true, &refusal))
+            stipple_sampler_release(s);
         else {
             md << "Refused: " << refusal << "\n\n";
             std::cerr << name << ": refused (" << refusal << ")\n";

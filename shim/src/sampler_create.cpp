@@ -92,7 +92,8 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
                     std::string("desc->flags has STIPPLE_SAMPLER_FLAG_BLUE_NOISE, which the ") + pattern->name +
                         " pattern does not support: a per-pixel shift of a tile-shared set adds low-frequency "
                         "error on non-periodic integrands (edges, ramps) and breaks the set's stratification; "
-                        "the flag is supported by " + blueNoisePatternList());
+                        "the flag is supported by " +
+                        blueNoisePatternList());
     // Streams serve sets of N points of every pattern, so N itself must be a set the pattern serves.
     if (desc.samples_per_pixel > pattern->limits.maxSetSize)
         throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "desc->samples_per_pixel is " + std::to_string(desc.samples_per_pixel) +

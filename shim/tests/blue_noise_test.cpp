@@ -124,14 +124,14 @@ double centredGaussianIntegral() {
     const double g1 = kSigma * std::sqrt(2 * std::numbers::pi) * std::erf(0.5 / (kSigma * std::numbers::sqrt2));
     return g1 * g1;
 }
-double slantedStep(double x, double y) { return x < 0.3 + 0.4 * y ? 1.0 : 0.0; } // integral 1/2
+double slantedStep(double x, double y) { return x < 0.3 + 0.4 * y ? 1.0 : 0.0; }                    // integral 1/2
 double quarterDisk(double x, double y) { return x * x + y * y < 2 / std::numbers::pi ? 1.0 : 0.0; } // 1/2
 
 // Per-pixel error of `integrand` over images of 128 x 128 pixels at N samples; the low band's mean periodogram
 // value (white noise of variance s^2 has s^2), by a direct DFT at the band's frequencies, overall and per image.
-ImageStats measure(uint32_t pattern, uint32_t flags, int images, const Integrand2& integrand = {centredGaussian,
-                                                                                               centredGaussianIntegral()},
-                   uint32_t n = 16, std::vector<double>* imageBands = nullptr) {
+ImageStats measure(uint32_t pattern, uint32_t flags, int images,
+                   const Integrand2& integrand = {centredGaussian, centredGaussianIntegral()}, uint32_t n = 16,
+                   std::vector<double>* imageBands = nullptr) {
     constexpr int kSize = 128, kBand = 16; // |k| < 16 of 128: |f| < 1/8 cycle per pixel
     const double exact = integrand.exact;
     ImageStats stats;
@@ -224,13 +224,13 @@ BOOST_AUTO_TEST_CASE(the_flag_adds_no_low_frequency_error_on_edges) {
                 const ImageStats plain = measure(pattern, 0, kImages, edge.integrand, n, &plainBands);
                 const ImageStats blue = measure(pattern, kBlue, kImages, edge.integrand, n, &blueBands);
                 const double gain = plain.band / blue.band;
-                const double se = std::sqrt(logMeanVariance(plainBands, plain.band) + logMeanVariance(blueBands, blue.band));
+                const double se =
+                    std::sqrt(logMeanVariance(plainBands, plain.band) + logMeanVariance(blueBands, blue.band));
                 const double high = gain * std::exp(z * se);
                 BOOST_TEST_MESSAGE(patternName(pattern) << " " << edge.name << " N=" << n << ": low-band gain " << gain
                                                         << " [" << gain * std::exp(-z * se) << ", " << high << "]");
-                BOOST_CHECK_MESSAGE(gain >= 2 && high >= 1, patternName(pattern)
-                                                                << " " << edge.name << " N=" << n
-                                                                << ": the flag's low-band gain is " << gain
-                                                                << ", upper bound " << high);
+                BOOST_CHECK_MESSAGE(gain >= 2 && high >= 1, patternName(pattern) << " " << edge.name << " N=" << n
+                                                                                 << ": the flag's low-band gain is "
+                                                                                 << gain << ", upper bound " << high);
             }
 }
