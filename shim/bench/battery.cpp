@@ -105,6 +105,23 @@ stipple_sampler makeSampler(const Variant& v, uint32_t n, std::vector<uint32_t> 
     return s;
 }
 
+// A one-dimension sampler of `pattern` with or without the blue-noise flag, or nullptr if the library refuses it.
+stipple_sampler makeSamplerIfAccepted(uint32_t pattern, bool blue) {
+    stipple_dimension_desc dim{};
+    dim.struct_size = sizeof dim;
+    dim.arity = 2;
+    dim.count = 1;
+    stipple_sampler_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.pattern = pattern;
+    desc.samples_per_pixel = 16;
+    desc.dimension_count = 1;
+    desc.dimensions = &dim;
+    desc.flags = blue ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0;
+    stipple_sampler s = nullptr;
+    return stipple_sampler_create(&desc, &s) == STIPPLE_OK ? s : nullptr;
+}
+
 // Replicate r's pixel: 67 apart, so every replicate lies in its own 64 x 64 blue-noise tile.
 inline void replicatePixel(int r, uint32_t& x, uint32_t& y) {
     x = 67u * uint32_t(r % 64);
@@ -605,7 +622,12 @@ int main(int argc, char** argv) {
         for (const std::string& p : opt.patterns) {
             uint32_t id;
             stipple_pattern_from_name(p.c_str(), &id);
-            if (p != "poisson-seed") variants.push_back({p, id, true});
+            // Only the patterns the library takes the flag for (the others refuse it at creation).
+            stipple_sampler probe = nullptr;
+            if (p != "poisson-seed" && (probe = makeSamplerIfAccepted(id, true))) {
+                stipple_sampler_release(probe);
+                variants.push_back({p, id, true});
+            }
         }
     auto has = [&](const char* s) { return std::find(opt.sections.begin(), opt.sections.end(), s) != opt.sections.end(); };
     const auto start = std::chrono::steady_clock::now();

@@ -162,7 +162,7 @@ void expect(bool ok, const std::string& what) {
 }
 
 void checkUnbiased() {
-    const char* patterns[] = {"independent", "stratified", "sobol", "pmj02+blue-noise"};
+    const char* patterns[] = {"independent", "stratified", "sobol", "stratified+blue-noise"};
     const int width = 6, height = 5, seeds = 48;
     const uint32_t spp = 16, k = 4;
     const double alpha = 1 - std::pow(1 - 0.01, 1.0 / (width * height * 3 * 4));

@@ -235,7 +235,7 @@ stipple_pattern_limits patternLimits(const stipple::detail::PatternOps& ops) {
     limits.max_set_size = ops.limits.maxSetSize;
     limits.max_values_per_sample = STIPPLE_MAX_VALUES_PER_SAMPLE;
     limits.max_dimensions = STIPPLE_MAX_DIMENSIONS;
-    limits.flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+    limits.flags = ops.blueNoise == stipple::detail::BlueNoiseMode::Unsupported ? 0u : STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
     return limits;
 }
 

@@ -1,4 +1,4 @@
-// blue_noise.cpp — the lattice map from pixels to sub-cells and shifts.
+// blue_noise.cpp — the lattice map from pixels to sub-cells.
 #include "blue_noise.h"
 
 #include "hash.h"
@@ -14,23 +14,20 @@ namespace {
 // |f| < 1/8 cycle per pixel (predicted white / low-band ratios in parentheses). Strata: a second-order Taylor
 // polynomial inside a stratum, folded by the tent (2D 1006, 3D 460, 1D 1643). Square (independent: the stratum is
 // the unit square): the worst of Gaussian bumps of width 0.15 at 5 positions per axis, folded by the tent (2D 20,
-// 3D 2, 1D 404). Shifts: weights 1/|k|^4 (3D 6, 1D 1643); in 2D this model ranks candidates only roughly (the
-// base sets damp their own low modes), so of its 12 best the one with the highest least measured ratio over
-// poisson, sobol and pmj02 at N = 16 on blue_noise_test's seeds was kept (80-111x; model 31). Every 2D and 1D map
-// is a bijection of the tile onto the 64 x 64 (4096) values (2D: det A odd; 1D: checked below), so a tile's
-// pixels take every sub-cell of a stratum, or every shift of the grid, once.
+// 3D 2, 1D 404). Every 2D and 1D map is a bijection of the tile onto the 64 x 64
+// (4096) values (2D: det A odd; 1D: checked below), so a tile's
+// pixels take every sub-cell of a stratum once.
 struct LatticeMaps {
     int32_t a1[2];
     int32_t a2[2][2];
     int32_t a3[3][2];
 };
-constexpr LatticeMaps kMaps[3] = {
+constexpr LatticeMaps kMaps[2] = {
     {{3136, 2339}, {{47, 39}, {25, 46}}, {{44, 52}, {55, 22}, {36, 24}}}, // LatticeUse::Strata
     {{1627, 576}, {{40, 55}, {9, 17}}, {{61, 21}, {18, 61}, {51, 35}}},   // LatticeUse::Square
-    {{3136, 2339}, {{37, 18}, {46, 37}}, {{9, 56}, {27, 24}, {39, 0}}},   // LatticeUse::Shift
 };
 constexpr bool oddDeterminant(const int32_t (&a)[2][2]) { return (a[0][0] * a[1][1] - a[0][1] * a[1][0]) % 2 != 0; }
-static_assert(oddDeterminant(kMaps[0].a2) && oddDeterminant(kMaps[1].a2) && oddDeterminant(kMaps[2].a2));
+static_assert(oddDeterminant(kMaps[0].a2) && oddDeterminant(kMaps[1].a2));
 // 1D: a x + b y mod 4096 takes every value once over the tile, for every swap and reflection of the pixel axes.
 constexpr bool bijective1(const int32_t (&a)[2]) {
     for (uint32_t variant = 0; variant < 8; ++variant) {
@@ -45,7 +42,7 @@ constexpr bool bijective1(const int32_t (&a)[2]) {
     }
     return true;
 }
-static_assert(bijective1(kMaps[0].a1) && bijective1(kMaps[1].a1) && bijective1(kMaps[2].a1));
+static_assert(bijective1(kMaps[0].a1) && bijective1(kMaps[1].a1));
 
 constexpr uint64_t kSymmetryIndex = 0x5e77u, kOffsetIndex = 0x0ff5u;
 constexpr uint64_t kOffsetStream = 0x0ff5e75a17ed0001ull; // keys the per-stratum offsets apart from the tile's key
@@ -93,25 +90,6 @@ void CrossPixelStrata::place(uint64_t stratum, uint32_t arity, uint32_t* jitter)
         const uint32_t t = c < Q / 2 ? 2 * c : 2 * (Q - 1 - c) + 1;
         jitter[i] = (t << 26) | (jitter[i] >> 6);
     }
-}
-
-void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, float* shift) {
-    const LatticePixel lattice(tileKey, pixelX, pixelY, arity, LatticeUse::Shift);
-    const uint32_t log2Q = arity == 1 ? 12 : 6;
-    for (uint32_t i = 0; i < arity; ++i) {
-        // c / Q plus a uniform 32-bit offset, wrapped by the 32-bit sum.
-        const uint32_t s = (lattice.c[i] << (32 - log2Q)) + uint32_t(hashAt(tileKey, kOffsetIndex + 1 + i) >> 32);
-        shift[i] = float(s >> 8) * 0x1p-24f;
-    }
-}
-
-void applyToroidalShift(const float* shift, uint32_t arity, size_t count, float* values) {
-    for (size_t i = 0; i < count; ++i)
-        for (uint32_t c = 0; c < arity; ++c) {
-            float v = values[i * arity + c] + shift[c];
-            v -= float(v >= 1.0f); // x + s < 2; a sum rounded up to exactly 1.0 becomes 0
-            values[i * arity + c] = v;
-        }
 }
 
 } // namespace stipple::detail

@@ -16,11 +16,7 @@
 //   are bijections of the tile onto the sub-cells (det A odd; 1D checked), so a tile's pixels stratify every
 //   stratum among themselves. The offset makes the sub-cell uniform and independent across strata: every
 //   pixel's set has exactly the plain pattern's distribution.
-// - poisson, poisson-seed, pmj02 and sobol: a Cranley-Patterson shift per pixel, s(p) = c(p) / Q + o mod 1 with a
-//   continuous offset o per tile (so every sample is uniform), over a base set the tile's pixels share (sobol: one
-//   Owen-scrambled sequence per tile, whose blocks past N continue under the same shift). The shift makes a
-//   non-periodic integrand periodic with a seam: on a smooth integrand that is not periodic a shifted net has
-//   the error of an integrand with an edge (poisson's plain sets are shifted already).
+// Other patterns refuse the flag (pattern_registry.h, BlueNoiseMode::Unsupported).
 #pragma once
 
 #include "patterns.h"
@@ -36,7 +32,6 @@ constexpr uint32_t kBlueNoiseTileLog2 = 6; // tiles of 64 x 64 pixels
 enum class LatticeUse : uint32_t {
     Strata, // stratified: sub-cells of small strata
     Square, // independent: sub-cells of the unit square
-    Shift   // the toroidal shift of the base-set variant
 };
 
 // The lattice map of one (tile, dimension, stream, block) at one pixel: c(p) without the offset, per axis.
@@ -54,11 +49,5 @@ struct CrossPixelStrata {
     // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell of the stratum.
     void place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const;
 };
-
-// The per-pixel toroidal shift of the base-set variant, one value per axis in [0, 1).
-void blueNoiseShift(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, float* shift);
-
-// x + shift wrapped into [0, 1) for count points of `arity` floats.
-void applyToroidalShift(const float* shift, uint32_t arity, size_t count, float* values);
 
 } // namespace stipple::detail

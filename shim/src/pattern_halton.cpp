@@ -142,15 +142,15 @@ void pointHalton(const SetKey& set, const Dimension& dim, uint32_t p, float* out
 
 } // namespace
 
-// Blocks continue the sequence (SetKey::block); with the blue-noise flag the pixels of a tile share one set and
-// each shifts it by its lattice-map shift (blue_noise.h), like sobol.
+// Blocks continue the sequence (SetKey::block). The blue-noise flag is refused: its only mechanism for a set that is
+// not strata, a per-pixel toroidal shift of a tile's set, adds a seam on non-periodic integrands (as for sobol).
 extern const PatternOps kHaltonPattern;
 constinit const PatternOps kHaltonPattern{
     .name = "halton",
     .domain = HashDomain::Halton,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {},
     .prepare = nullptr,
     .prepareStreamsOnFirstUse = false,

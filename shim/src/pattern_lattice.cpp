@@ -98,15 +98,15 @@ void pointLattice(const SetKey& set, const Dimension& dim, uint32_t p, float* ou
 
 } // namespace
 
-// Blocks continue the sequence; with the blue-noise flag the pixels of a tile share one sequence and each shifts
-// it by its lattice-map shift (blue_noise.h), like sobol.
+// Blocks continue the sequence (SetKey::block). The blue-noise flag is refused: its only mechanism for a set that is
+// not strata, a per-pixel toroidal shift of a tile's set, adds a seam on non-periodic integrands (as for sobol).
 extern const PatternOps kLatticePattern;
 constinit const PatternOps kLatticePattern{
     .name = "lattice",
     .domain = HashDomain::Lattice,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {},
     .prepare = nullptr,
     .prepareStreamsOnFirstUse = false,

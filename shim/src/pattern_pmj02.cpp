@@ -116,25 +116,24 @@ template <uint32_t Arity>
 }
 #endif
 
-template <uint32_t Arity> void pmj02Batch(const Pmj02Set& set, uint32_t first, uint32_t count, float* out) {
+template <BatchIsa Isa, uint32_t Arity>
+void pmj02Batch(const Pmj02Set& set, uint32_t first, uint32_t count, float* out) {
 #if defined(STIPPLE_BATCH_ISA_CLONES)
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: return pmj02BatchAvx512<Arity>(set, first, count, out);
-    case BatchIsa::Avx2: return pmj02BatchAvx2<Arity>(set, first, count, out);
-    case BatchIsa::Baseline: break;
-    }
+    if constexpr (Isa == BatchIsa::Avx512) return pmj02BatchAvx512<Arity>(set, first, count, out);
+    if constexpr (Isa == BatchIsa::Avx2) return pmj02BatchAvx2<Arity>(set, first, count, out);
 #endif
     for (uint32_t i = 0; i < count; ++i) pmj02Point(set, Arity, first + i, out + size_t(i) * Arity);
 }
 
 } // namespace
 
+template <BatchIsa Isa>
 void fillPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     const Pmj02Set set(key, block, dim);
     switch (dim.arity) {
-    case 1: return pmj02Batch<1>(set, first, count, out);
-    case 2: return pmj02Batch<2>(set, first, count, out);
-    default: return pmj02Batch<3>(set, first, count, out);
+    case 1: return pmj02Batch<Isa, 1>(set, first, count, out);
+    case 2: return pmj02Batch<Isa, 2>(set, first, count, out);
+    default: return pmj02Batch<Isa, 3>(set, first, count, out);
     }
 }
 
@@ -143,27 +142,28 @@ void pointPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t p, 
 }
 
 namespace {
+template <BatchIsa Isa>
 void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    fillPmj02(set.key, set.block, dim, first, count, out);
+    fillPmj02<Isa>(set.key, set.block, dim, first, count, out);
 }
 } // namespace
 
-// Blocks continue the set's sequence (SetKey::block, Pmj02Set); one batch function for every ISA.
+// The set key for every block (Sequence keying): the pattern continues its sequence past N and rekeys itself
+// once the stored sequence runs out (Pmj02Set).
 extern const PatternOps kPmj02Pattern;
 constinit const PatternOps kPmj02Pattern{
     .name = "pmj02",
     .domain = HashDomain::Pmj02,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {.maxArity = 3, .maxSetSize = 1u << Pmj02Family::kMaxLog2Length},
     .prepare = [](Dimension& dim) { dim.pmj02 = Pmj02Family::acquire(dim.log2Length); },
     .prepareStreamsOnFirstUse = false, // a family generates its sequences on first use
     .strata = nullptr,
-    .point = [](const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
-        pointPmj02(set.key, set.block, dim, p, out);
-    },
-    .fill = {fillSet, fillSet, fillSet},
+    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
+                float* out) { pointPmj02(set.key, set.block, dim, p, out); },
+    .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
     .fillStrata = nullptr,
 };
 

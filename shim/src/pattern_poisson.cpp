@@ -278,8 +278,8 @@ constinit const PatternOps kPoissonPattern{
     .name = "poisson",
     .domain = HashDomain::Poisson,
     .blockKeying = BlockKeying::Rekeyed,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {},
     .prepare = [](Dimension& dim) { dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize); },
     .prepareStreamsOnFirstUse = true,
@@ -296,8 +296,8 @@ constinit const PatternOps kPoissonSeedPattern{
     .name = "poisson-seed",
     .domain = HashDomain::PoissonSeed,
     .blockKeying = BlockKeying::Rekeyed,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {},
     .prepare = nullptr,
     .prepareStreamsOnFirstUse = false,

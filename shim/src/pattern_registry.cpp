@@ -64,6 +64,14 @@ std::string patternNameList() {
     return listOf(items, std::size(items));
 }
 
+std::string blueNoisePatternList() {
+    std::string items[std::size(kPatterns)];
+    size_t count = 0;
+    for (const PatternOps* p : kPatterns)
+        if (p->blueNoise != BlueNoiseMode::Unsupported) items[count++] = std::string("\"") + p->name + "\"";
+    return count == 0 ? std::string("no pattern") : listOf(items, count);
+}
+
 std::string arityList(uint32_t maxArity) {
     std::string items[3];
     for (uint32_t a = 1; a <= maxArity && a <= 3; ++a) items[a - 1] = std::to_string(a);

@@ -143,8 +143,8 @@ constinit const PatternOps kSobolPattern{
     .name = "sobol",
     .domain = HashDomain::Sobol,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::TileShift,
-    .latticeUse = LatticeUse::Shift,
+    .blueNoise = BlueNoiseMode::Unsupported,
+    .latticeUse = LatticeUse::Strata, // unused
     .limits = {},
     .prepare = nullptr,
     .prepareStreamsOnFirstUse = false,

@@ -62,6 +62,7 @@ void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out);
 
 // pmj02: the key is the set's (before any block); block b continues the set's sequence (pattern_pmj02.cpp).
+template <BatchIsa Isa>
 void fillPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t first, uint32_t count, float* out);
 void pointPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t p, float* out);
 

@@ -86,12 +86,7 @@ void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t fi
         const CrossPixelStrata strata(tile.key, set.pixelX, set.pixelY, dim.arity, ops_.latticeUse);
         return ops_.fillStrata(keyBlock(ops_, pixelKey(set), set.block), dim, first, count, out, strata);
     }
-    case BlueNoiseMode::TileShift: {
-        fill_(tile, dim, first, count, out);
-        float shift[3];
-        blueNoiseShift(tile.key, set.pixelX, set.pixelY, dim.arity, shift);
-        return applyToroidalShift(shift, dim.arity, count, out);
-    }
+    case BlueNoiseMode::Unsupported: break; // refused at creation (sampler_create.cpp)
     }
 }
 

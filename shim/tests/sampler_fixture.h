@@ -99,5 +99,9 @@ constexpr uint32_t kAllPatterns[] = {STIPPLE_PATTERN_INDEPENDENT,  STIPPLE_PATTE
                                      STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,      STIPPLE_PATTERN_PMJ02,
                                      STIPPLE_PATTERN_LATTICE,      STIPPLE_PATTERN_HALTON};
 constexpr int kPatternCount = int(sizeof kAllPatterns / sizeof kAllPatterns[0]);
+// The patterns that take STIPPLE_SAMPLER_FLAG_BLUE_NOISE (the others refuse it at creation: blue_noise_test).
+constexpr uint32_t kBlueNoisePatterns[] = {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED};
+constexpr uint32_t kBlueNoiseRefused[] = {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,
+                                          STIPPLE_PATTERN_PMJ02,   STIPPLE_PATTERN_LATTICE,      STIPPLE_PATTERN_HALTON};
 
 } // namespace stipple::test

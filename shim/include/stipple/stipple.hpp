@@ -1,7 +1,7 @@
 // stipple.hpp — the header-only C++ kit over the C ABI (stipple.h). C++11 and later; works with and without
 // exceptions.
 //
-//   stipple::Sampler sampler("sobol+blue-noise", 64, seed);    // no layout: streams and arrays (ABI 1.1 / 1.2)
+//   stipple::Sampler sampler("stratified+blue-noise", 64, seed);    // no layout: streams and arrays (ABI 1.1 / 1.2)
 //   if (!sampler) { /* sampler.status().message() */ }          // (with exceptions the constructor throws instead)
 //   stipple::PixelSampleCursor cursor(sampler);                 // one per thread
 //   cursor.start(stipple::Pixel{x, y}, sampleIndex);            // like pbrt-v4's Sampler::StartPixelSample

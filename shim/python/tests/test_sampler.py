@@ -30,6 +30,11 @@ class SamplerTest(unittest.TestCase):
                          ("independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"))
         for pattern in self.lib.patterns:
             for blue_noise in (False, True):
+                if blue_noise and pattern not in ("independent", "stratified"):  # the flag serves strata patterns
+                    with self.assertRaises(stipple.StippleError) as refused:
+                        self.lib.sampler(pattern, 16, 5, blue_noise=True)
+                    self.assertIn("blue", refused.exception.message.lower())
+                    continue
                 with self.lib.sampler(pattern, 16, 5, blue_noise=blue_noise) as s:
                     values = s.stream_fill(2, 3, 0, 16, 1, 2)
                     self.assertEqual(values.shape, (16, 2))
@@ -45,7 +50,7 @@ class SamplerTest(unittest.TestCase):
             np.testing.assert_array_equal(batch[i], s.stream(1, 2, 5 + i, 7, 2))
 
     def test_many_pixels_in_one_call_equal_one_pixel_calls(self):
-        s = self.lib.sampler("sobol", 32, 11, blue_noise=True)
+        s = self.lib.sampler("stratified", 32, 11, blue_noise=True)
         xy = np.array([[x, y] for y in range(-2, 3) for x in range(70, 75)], dtype=np.int64)
         sets = s.pixels(xy, dimension=4, arity=3)
         self.assertEqual(sets.shape, (len(xy), 32, 3))
