@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Fuzzing CI: build the libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each for a bounded
 # time over its seed corpus and its regressions, STIPPLE_JOBS harnesses at a time. Exit status 1 when any harness
 # finds a crash, a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/

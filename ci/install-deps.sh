@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Installs the Debian 12 packages a job needs. Idempotent: when everything is present it only checks.
 # Non-interactive (CI has no standard input); never installs recommended extras.
 #

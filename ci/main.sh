@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The README's main job: install what is missing, configure and build what it runs (preset main), run the quick
 # validation matrix (all four scenes) and write its report to report/ at the repository root, then the
 # study's Figure 3 in its quick form (generation time vs N, rho, spectrum) to report/figure3/.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The first screen of a report as a reader sees it (headless Chromium, 1280 × 900), for the README:
 #   bash ci/report-screenshot.sh [REPORT_DIR] [OUT.png]     (defaults: report, validation/report-first-screen.png)
 set -euo pipefail

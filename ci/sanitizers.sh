@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Sanitizer CI: build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
 # labels `slow` and `slurm` (the Slurm test checks job orchestration, which the release run covers); build the
 # tsan preset and run label `parallel` (tests that exercise several threads). Each stage builds only the targets

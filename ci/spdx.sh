@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The licence header of every source, script and build file: an SPDX identifier and a copyright line, in the
 # file's own comment syntax, first in the file (after a shebang).
 #

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The build targets a selection of CTest tests runs, one per line, for `cmake --build --target`: so that a stage
 # that runs some of the tests (the sanitizer stages) builds those and nothing else.
 #

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The README's test command: install what is missing, then
 #   1. configure, build and run the whole CTest suite in Release (preset `release`);
 #   2. the suite under ASan + UBSan and the multi-threaded tests under TSan (ci/sanitizers.sh);

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # cmake -DOUT=<file.cpp> -DROOT=<dir> -DFILES=<a;b;...> -P HashSources.cmake
 # Writes a C++ file defining stipple::render::rendererSourceHash(): the SHA-256 (first 16 hex digits) of the
 # renderer's sources, names relative to ROOT and contents, so the identity changes whenever its code does.

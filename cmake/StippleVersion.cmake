@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The target stipple_version: <build>/generated/stipple/version.h with the project version and, in a git
 # checkout, the git description. Every part's --version and identity strings come from it.
 find_package(Git QUIET)

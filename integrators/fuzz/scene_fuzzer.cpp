@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // scene_fuzzer.cpp — libFuzzer harness for the scene YAML loader (integrators/SCENE_FORMAT.md). The input is
 // written to a scene file in a per-process temporary folder (includes and meshes resolve against it) and loaded.
 // Expected: either a SceneDescription or a SceneError whose message names the file; any other exception, a

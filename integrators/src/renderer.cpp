@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Scene::load and Scene::render: the public API of renderer.h on top of the loader, the Embree scene, the shim
 // sampler, the integrators and the film. Tiles of kTileSize^2 pixels are rendered in parallel with TBB; every
 // pixel's samples depend only on (seed, pixel, sample index, dimension), so the image does not depend on the

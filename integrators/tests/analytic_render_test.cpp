@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Analytic renders (as pbrt-v4's integrators_test):
 //  - the furnace sphere: camera inside a sphere of albedo 0.5 emitting 0.5 -> radiance exactly 1, for each
 //    pattern, path tracer;

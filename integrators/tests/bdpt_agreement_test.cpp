@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // BDPT and the path tracer estimate the same image: a diffuse Cornell box, a glossy scene (rough plastic and
 // rough conductor under a sphere light and a quad light, open to the sky), a Cornell box with a glass and a
 // mirror sphere, the Cornell box through a thin lens (defocused: splats must land where the lens projects), and a

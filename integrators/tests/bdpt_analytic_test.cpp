@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // BDPT on the analytic furnace: a camera inside a sphere of albedo 0.5 whose inside emits
 // 0.5 sees radiance sum_{k=0..D} 0.5 * 0.5^k = 1 - 0.5^(D+1) at max depth D (BDPT has no Russian roulette, so
 // the truncation is exact). Pinhole camera, and a thin lens (lens density, importance and raster projection of

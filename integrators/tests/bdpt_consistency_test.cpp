@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Exact (non-statistical) checks of BDPT's bookkeeping on subpaths drawn by the real walks, for a diffuse
 // Cornell box, the glossy two-light scene and the box with glass and mirror spheres:
 //  - every density a walk stores (pdfFwd from its own end, pdfRev from the other) equals what PathEvaluator

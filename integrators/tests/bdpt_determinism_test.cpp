@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // BDPT images are bitwise identical for 1 and 2 threads: camera and light subpaths read only the pixel sample's
 // shim values, and light-tracing splats go to the tile's own list, merged in tile order after the render.
 #define BOOST_TEST_MODULE bdpt_determinism

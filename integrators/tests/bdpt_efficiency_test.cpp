@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // BDPT against the path tracer at equal time, on the caustic scene (small bright light, glass ball, diffuse
 // floor) and, for the record, on the diffuse Cornell box. For each integrator K = 6 renders with different seeds
 // are made, interleaved so that load on a shared machine hits both alike. Both estimators are unbiased (see

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // BDPT declares to the shim exactly the dimensions it reads (integrators/src/bdpt_integrator.cpp lists them), and
 // its debug variants parse or fail with a message naming the expected forms.
 #define BOOST_TEST_MODULE bdpt_layout

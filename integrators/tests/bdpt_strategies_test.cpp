@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Each BDPT strategy (s, t) alone, unweighted, estimates all paths of depth s + t - 2 (every strategy can
 // sample every such path in a diffuse scene with an area light), and so does the MIS-weighted sum of the
 // strategies of that depth ("bdpt:depth=D"). On the diffuse Cornell box at depths 0, 1 and 2 every unweighted

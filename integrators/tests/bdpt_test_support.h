@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Statistics for the BDPT tests. The film's per-pixel variance leaves out splats (light tracing, t = 1), so
 // BDPT's uncertainty is measured across K independent renders (seeds): each block's mean over its pixels and
 // channels is one observation per render, and two integrators are compared per block by Welch's t-test

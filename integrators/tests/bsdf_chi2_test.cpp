@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Chi-square goodness of fit of each material's sample() against its pdf() (pbrt-v4 bsdfs_test, Mitsuba 3's
 // chi2 test). Directions are binned on a grid centred on the mirror direction of wo: polar angle psi from it,
 // warped as psi = pi t^4 so that narrow lobes (roughness 0.001) fall across many cells, and azimuth phi.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Delta lobes (mirror, smooth dielectric) cannot be chi-square tested: check their directions and weights.
 // Also energy bounds of the rough materials (white furnace: albedo <= 1) from a stratified grid of inputs.
 #define BOOST_TEST_MODULE bsdf_specular

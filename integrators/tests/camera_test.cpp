@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Camera conventions that BDPT relies on: We(ray) finds the raster point a ray was generated for; sampleWi and
 // rasterFromWorld agree; pdfDir integrates to 1 over the image; thin-lens rays through the lens converge on
 // the plane of focus; We * cos / (pdfPos * pdfDir) = 1 for generated rays (importance normalisation).

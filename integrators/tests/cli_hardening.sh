@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # stipple-render's command line on careless input, each case a usage error (exit 2) or a failure found before
 # rendering, with a message naming what is wrong:
 #  - empty values of --shim, --integrator, -o are errors, not the defaults (-o "" used to write into the

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # stipple-render's outputs are all-or-nothing:
 #  1. a scene whose name: is a path writes only <safe name>.exr/.png in the working folder;
 #  2. SIGTERM at any moment of a run leaves no temporary and the EXR/PNG pair either both old or both new;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The Cornell box renders with the path tracer: finite, lit, the expected wall colours, the layout it declares,
 // and an EXR/PNG round trip with metadata.
 #define BOOST_TEST_MODULE cornell_box

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Inputs that ask for more than the renderer can give end in a SceneError (or std::invalid_argument for render
 // options) naming the limit and the offending value: never a stack overflow, std::bad_alloc, a hang on an
 // endless file or an Embree assertion. The static cases are in bad-scenes/ (scene_errors_test); these need

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Loading a scene takes memory in proportion to its file: the peak a load adds (measured in a child process,
 // ru_maxrss) stays within limits::kLoadBytesPerInputByte × the file's size + limits::kLoadBaseBytes, for a
 // typical mesh scene (inline vertices and indices) and for the worst case of the compact document (one-digit

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // PLY (ascii, binary little endian, quads) and OBJ (negative indices, v/vt/vn forms) readers; shape builders'
 // orientation (outward normals) and the scene loader's shapes (include, instance, transforms).
 #define BOOST_TEST_MODULE mesh_io

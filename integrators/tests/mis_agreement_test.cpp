@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Light-only, BSDF-only and MIS direct lighting estimate the same image on a glossy scene (rough plastic and
 // rough conductor lit by a sphere light and a quad light). Compared per block of 8x8 pixels by a two-sample
 // z-test (Welch's test with large samples; Jung et al. 2020) on the block means, alpha = 0.01 Sidak-corrected over

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # 1. `ldd stipple-render` must not list libstipple (it is dlopened).
 # 2. No source in integrators/ may use another random source than the shim.
 execute_process(COMMAND ldd ${EXE} OUTPUT_VARIABLE deps RESULT_VARIABLE rc)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // An EXR and its PNG are published together or not at all, even when the process is killed between the two
 // renames. The states a SIGKILL can leave are built exactly: a child process writes the new pair to temporaries
 // and the journal with the real code, does some of the renames and ends without cleaning up (as SIGKILL would);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Every file in tests/bad-scenes/*.yaml starts with "# expect: <substring>". Loading it must throw SceneError
 // whose message contains that substring and names a file:line:column.
 #define BOOST_TEST_MODULE scene_errors

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // shim_identity_test.cpp — shimIdentity, the shim's part of every reference-cache key: stable for one file,
 // different for a rebuilt one even when the version string is the same.
 #define BOOST_TEST_MODULE shim_identity

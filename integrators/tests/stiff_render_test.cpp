@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Stiff and extreme renders, through the public renderer API on the small scenes of tests/stiff-scenes/.
 // Every case states its expected outcome: an exact value, a value within a bound, or a clear SceneError.
 // Every render must also come back finite with nonFiniteSamples == 0 (the film's discarded-sample count is

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Helpers shared by the renderer's tests: scene files in a temporary directory and image statistics.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The image is bitwise identical for 1 and 2 threads (every value is a function of (seed, pixel, sample,
 // dimension); tiles never share state; splats merge in tile order).
 #define BOOST_TEST_MODULE thread_determinism

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The compact YAML document and its node view: what the loaders rely on (lookups, iteration, marks, nulls),
 // aliases as references (a "billion laughs" input stays as small as its text), and duplicate keys rejected with
 // their position in small maps (scanned) and big ones (hashed).

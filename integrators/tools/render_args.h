@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple-render's command line, parsed apart from main so the fuzzer (integrators/fuzz) can drive it.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple-render: renders a scene file with a sample pattern from libstipple, writes a float EXR and a PNG.
 //   stipple-render <scene.yaml> [options] (render_args.cpp's kRenderUsage lists them with their defaults)
 // Exit codes: 0 success, 1 render/output failure, 2 bad arguments or a scene that cannot be loaded.

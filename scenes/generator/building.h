@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // One building prototype: a block of storeys with window recesses, an optional ground-floor arcade,
 // cornices and a tiled pitched or hip roof, split by material so the scene can colour it.
 #pragma once

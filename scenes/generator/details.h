@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Small repeated details, each one prototype instanced many times: balconies, chimneys, street lamps, and the
 // piazza's fountain. Each is a list of (material, mesh) parts in its own coordinates.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple-citygen: writes the Italian City's geometry (binary PLY prototypes + an includable YAML of instances).
 //   stipple-citygen [--seed N] [--out DIR] [--name NAME] | --version
 #include "town.h"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // A triangle soup with the few primitive builders the town needs, and a binary little-endian PLY writer.
 #pragma once
 

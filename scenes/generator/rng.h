@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // A seeded, platform-independent random stream (PCG32, O'Neill 2014). std::*_distribution is not used on
 // purpose: its output differs between standard libraries, and the generator must be byte-reproducible.
 #pragma once

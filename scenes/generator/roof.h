@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Pitched (gable) and hip roofs covered with rows of barrel tiles (coppi), with ridge and hip rolls.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The Italian town: a street grid of perimeter blocks, a piazza with a fountain and a campanile, a narrow via
 // leading into it; buildings and details are instances of a few prototypes.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Small 3-vector and right-handed frame used by the city generator.
 #pragma once
 

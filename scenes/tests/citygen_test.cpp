@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The city generator is deterministic: the same seed writes byte-identical files; another seed does not.
 #define BOOST_TEST_MODULE citygen
 #include <boost/test/unit_test.hpp>

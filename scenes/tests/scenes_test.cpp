@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The four study scenes through the renderer API: each loads, declares only the sample dimensions it uses,
 // and renders a tiny image with no non-finite samples and a plausible (positive, finite) mean.
 #define BOOST_TEST_MODULE scenes

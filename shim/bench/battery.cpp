@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // battery.cpp — every pattern on the standard integrand battery (battery_integrands.h), through the C ABI as a
 // host sees it (stipple-link: shared).
 //

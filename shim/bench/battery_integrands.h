@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // battery_integrands.h — the standard integrand battery on [0,1)^d, d = 1, 2, 3, with exact integrals.
 //
 // Genz (1984) families with randomised parameters: oscillatory, product peak, corner peak, Gaussian, continuous

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // blue_noise_gain.cpp — what STIPPLE_SAMPLER_FLAG_BLUE_NOISE does to the error image, per pattern and per 2D
 // integrand of the battery (battery_integrands.h: smooth, kink, edge and zone-plate classes), through the C ABI.
 //

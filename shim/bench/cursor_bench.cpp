@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // cursor_bench.cpp — what a call-order host pays per value: stipple.hpp's documented PixelSampleCursor against the
 // per-pixel stream_fill cache a host would write by hand, and against one C call per value.
 //

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Per-value cost of stipple.hpp's PixelSampleCursor against a hand-written per-pixel batch cache, from one run of
 shim_cursor_bench (see its header for the command).
 

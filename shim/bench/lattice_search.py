@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """lattice_search.py — the lattice maps of the blue-noise flag (src/blue_noise.cpp), found by a seeded random search.
 
 A pixel p = (x, y) of a 64 x 64 tile maps to c(p) = (A p + o) mod Q per axis (Q = 64; 1D: 4096). Mode k of a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_table.cpp — the one table of shim/POINTSETS.md for every pattern, the blue-noise spectrum and the
 // poisson / stratified MSE ratios, measured through the C API in one run.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pointsets_bench.cpp — fresh generation of one Poisson set: poisson vs poisson-seed, 1D/2D/3D, N = 16 ... 100000.
 //
 // BM_Generate/<generator>/<dim>/<N>: one set per iteration, a new seed each time (fresh, never cached).

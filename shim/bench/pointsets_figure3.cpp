@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pointsets_figure3.cpp — the study's Figure 3 (generation time vs N per pattern, 1D/2D/3D), redone, plus the
 // quality tables and the isotropy figure of shim/POINTSETS.md. One command:
 //

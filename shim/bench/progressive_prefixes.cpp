@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // progressive_prefixes.cpp — what a prefix of a set is worth: prints the tables of POINTSETS.md ("Prefixes").
 //
 // For stratified and poisson (independent as the reference), 2D streams with N = 256 and N = 1024:

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Per-value cost ratios against independent from one run of shim_shim_bench.
 
     bin/shim_shim_bench [--isa=baseline|avx2|avx512] --benchmark_filter='BM_(FillPixel|Sample|Stream|StreamFill)/' \\

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // shim_bench.cpp — values/s of every sampling call per pattern x arity x N (one value = one point of `arity` floats).
 //
 // BM_FillPixel/<pattern>/<arity>/<N>: the batch call, one call per iteration, each for the next pixel; items = N.

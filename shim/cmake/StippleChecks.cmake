@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # StippleChecks.cmake — CTest checks of the library as a product: exported surface, ABI, header, example hosts.
 
 # The header compiles as strict C99 and as strict C++ (a compile-only test; it also builds as a target below).

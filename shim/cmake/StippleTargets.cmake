@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # StippleTargets.cmake — one executable per benchmark source file, configured by a comment in the file:
 #   // stipple-link: shared             link libstipple.so (the C ABI as hosts see it) instead of the internal
 #                                       objects (which give access to the C++ internals, e.g. stipple::pointsets).

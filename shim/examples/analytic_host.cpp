@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // analytic_host.cpp — a host renderer of libstipple as a C++11 program built without exceptions: every value
 // through stipple.hpp's PixelSampleCursor, sample arrays for direct lighting (pbrt-v3's Get2DArray shape), errors
 // through the status forms.

@@ -1,3 +1,5 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Copyright 2026 The stipple authors */
 /*
  * quarter_disk.c — a plain C99 host of libstipple: estimates the quarter disk area pi/4 with every pattern.
  *

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """quarter_disk.py — a Python host of libstipple: estimates the quarter disk's area pi/4 with every pattern the
 library offers (with and without blue noise), through the stipple package.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // tiny_path_tracer.cpp — a C++ host of libstipple written like a pbrt-v4 integrator: no declared layout, values
 // asked by call order through stipple.hpp's PixelSampleCursor, calls skipped on data-dependent branches.
 //

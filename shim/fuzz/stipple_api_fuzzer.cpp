@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple_api_fuzzer.cpp — libFuzzer harness for the C ABI. The input bytes are read as a sequence of API calls
 // with their arguments (bad ones included: unknown patterns, arity 0 or 4, struct sizes too small or too large
 // with non-zero tails, N = 0 or above the maximum, dimension indices past the layout, short buffers, NULLs).

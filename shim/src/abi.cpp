@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // abi.cpp — the C ABI: every exported stipple_* function and the dlopen function table.
 //
 // Each entry point checks its arguments (messages name the argument, its value and what was expected) and runs

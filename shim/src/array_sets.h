@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // array_sets.h — a sampler's lazily made set states of its array streams, one per (arity, k) asked.
 //
 // Lookups are lock-free after the first use of an (arity, k): a table of atomic pointers, filled under a mutex.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // avx512_intrinsics.h — <immintrin.h> for the hand-written AVX-512 kernels' own files (simd_avx512.h).
 //
 // GCC 12's AVX-512 headers start some intrinsics from _mm512_undefined_*(), which -W(maybe-)uninitialized reports

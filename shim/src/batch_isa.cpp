@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // batch_isa.cpp — the run-time pick of the batch kernels' ISA (see batch_isa.h).
 #include "batch_isa.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // batch_isa.h — which vector ISA the batch kernels run with.
 //
 // The batch calls (fill_pixel, stream_fill) of the cheap patterns are loops of integer hashing that the compiler

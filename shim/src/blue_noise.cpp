@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // blue_noise.cpp — the lattice map from pixels to sub-cells.
 #include "blue_noise.h"
 

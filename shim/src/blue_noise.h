@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // blue_noise.h — screen-space blue noise: neighbouring pixels get sets whose errors cancel at low frequencies.
 //
 // STIPPLE_SAMPLER_FLAG_BLUE_NOISE. One mechanism: a lattice map per tile of 64 x 64 pixels and dimension. Pixel

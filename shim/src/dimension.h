@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // dimension.h — one validated entry of a sampler's dimension layout, with what its pattern precomputed.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // error.cpp — the per-thread error message.
 #include "error.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // error.h — how failures travel inside the library and how they reach the host.
 //
 // Inside: code throws stipple::detail::Error (a status + a message naming the argument, its value and what was

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // fast_divider.h — exact division of numerators < 2^22 by a fixed divisor with one multiply and one shift.
 //
 // Granlund & Montgomery (1994), Theorem 4.2: with k = 22 + ceil(log2 d) and m = ceil(2^k / d),

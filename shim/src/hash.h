@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // hash.h — the counter-based hashing every stream is built from.
 //
 // All randomness in libstipple is a pure function of its inputs: a key is derived by chaining a strong 64-bit

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // owen_scrambling.h — hash-based nested uniform (Owen) scrambling of 32-bit binary fractions.
 //
 // Burley, "Practical Hash-based Owen Scrambling" (JCGT 9(4), 2020), after Laine & Karras (2011): a hash whose

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_halton.cpp — a scrambled Halton sequence: bases 2, 3 and 5 for the axes of one set.
 //
 // Point j of the sequence is (x_2(j), x_3(j), x_5(j)) up to the set's arity: x_2 is the base-2 radical inverse of j

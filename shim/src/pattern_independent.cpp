@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_independent.cpp — independent uniform values: value (p, c) is the hash of (set key, p * arity + c).
 // With the blue-noise flag, point p of the pixels of a tile is stratified across them (blue_noise.h): the top
 // digits of its coordinates come from the pixel's sub-cell, the rest from the same hash as without.

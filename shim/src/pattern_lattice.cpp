@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_lattice.cpp — a randomly shifted rank-1 lattice sequence, extensible in base 2.
 //
 // Point j of the sequence is frac(phi2(j) * z + u) per axis: phi2 is the base-2 radical inverse (the reversed

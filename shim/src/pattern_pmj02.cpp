@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_pmj02.cpp — progressive multi-jittered (0,2) sequences, served from cached families.
 //
 // Each (pixel, dimension) set takes one cached pmj02 sequence (pmj02_family.h: S = 2^storedLog2Length points,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_poisson.cpp — serving Poisson-disk sets: "poisson" from the cache, "poisson-seed" generated fresh.
 //
 // A served set is a stored toroidal set moved by a symmetry of the torus (axis permutation and reflections) and

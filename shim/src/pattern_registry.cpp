@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_registry.cpp — the patterns in public id order: the one place a STIPPLE_PATTERN_* id meets its pattern.
 #include "pattern_registry.h"
 

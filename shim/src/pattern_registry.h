@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_registry.h — what a pattern is to the sampler: one PatternOps per STIPPLE_PATTERN_* id.
 //
 // A pattern is defined once, in its own source file, as a PatternOps (its name, hash domain, block keying,

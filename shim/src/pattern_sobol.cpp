@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_sobol.cpp — Owen-scrambled Sobol' points (Burley 2020), padded per (pixel, dimension).
 //
 // The set of one (pixel, dimension) is M points of the first `arity` Sobol' dimensions (M = k*N for a declared

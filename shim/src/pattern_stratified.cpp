@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pattern_stratified.cpp — jittered strata: one sample per used cell of the dimension's StrataGrid.
 //
 // Order of the set's points (what a prefix of the set is worth):

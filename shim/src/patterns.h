@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // patterns.h — the sample patterns as pure functions of a set key.
 //
 // Each pattern serves the set of one (pixel, dimension, block): M points of `arity` floats (M = k*N for a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // permutation.h — a hashed permutation of [0, length) evaluated one element at a time.
 //
 // Kensler, "Correlated Multi-Jittered Sampling" (Pixar Technical Memo 13-01, 2013): a bijective hash on the

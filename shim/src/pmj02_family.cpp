@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pmj02_family.cpp — lazily generated pmj02 sequences and the registry of live families.
 #include "pmj02_family.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pmj02_family.h — the cached pmj02 sequences of one length, shared by every sampler that serves them.
 //
 // A family serves sets of up to 2^log2Length points. It holds setCount sequences of 2^storedLog2Length points,

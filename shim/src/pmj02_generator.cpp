@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pmj02_generator.cpp — the pmj02 construction of Christensen, Kensler & Kilpatrick (EGSR 2018), section 5.
 //
 // The sequence grows by doublings. Going from n = 4^q points (one per cell of a 2^q x 2^q grid) to 2n, the new

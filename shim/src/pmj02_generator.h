@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pmj02_generator.h — progressive multi-jittered (0,2) sequences (Christensen, Kensler & Kilpatrick 2018).
 //
 // generatePmj02(log2Length, seed) returns 2^log2Length points as 32-bit fixed-point (x, y) pairs such that every

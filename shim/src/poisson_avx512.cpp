@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson_avx512.cpp — serving a 1D or 2D poisson set of 2^j points in its layered order (pattern_poisson.cpp,
 // serveLayered) with AVX-512, a 16-float block at a time (simd_avx512.h).
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson_cache.cpp — lazily generated Poisson set families and their bounded cache.
 #include "poisson_cache.h"
 

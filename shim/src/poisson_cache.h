@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson_cache.h — amortised Poisson-disk sets: a bounded, thread-safe cache of toroidal sets per (arity, M).
 //
 // A family holds setCount sets of M points for one arity. Set j is generated lazily, on first use, by

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // progressive_order.cpp — farthest-point and Morton/radical-inverse orders of a stored toroidal set.
 #include "progressive_order.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // progressive_order.h — reordering a stored toroidal point set so that every prefix is well spread.
 //
 // Served Poisson sets are read in stored order, so the order chosen here is what a host rendering a prefix of a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // progressive_strata.h — the cell of point q in the progressive order of a power-of-two strata grid.
 //
 // q's bits, read from bit 0 up and dealt axis by axis (x, y, z, x, ...), are the cell coordinates' bits from the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // sampler.cpp — from a (pixel, dimension, sample) request to its set, its block and its pattern's functions.
 #include "sampler.h"
 

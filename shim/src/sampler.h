@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // sampler.h — the object behind a stipple_sampler handle: immutable after creation, shared by threads.
 //
 // Two ways in:

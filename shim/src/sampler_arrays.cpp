@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // sampler_arrays.cpp — array streams: k values per sample of one array, one set of k * N points per block.
 //
 // An array is served exactly as a declared dimension of count k (sample i's values are points i * k .. i * k + k - 1

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // sampler_create.cpp — validating a stipple_sampler_desc and building the Sampler it describes.
 //
 // Extensible structs: struct_size below the first released size is STIPPLE_ERROR_STRUCT_SIZE; bytes past the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // simd_avx512.h — hand-written AVX-512 batch kernels (the BatchIsa::Avx512 variant, batch_isa.h).
 //
 // The compiler's vectorisation of the generic batch loops leaves per-value work that wide integer lanes do in one

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // sobol_matrices.h — the generator matrices of the first three dimensions of Sobol's sequence.
 //
 // Dimension 0 is van der Corput's (the identity on reversed bits); dimensions 1 and 2 use the primitive

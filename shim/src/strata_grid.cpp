@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // strata_grid.cpp — choosing the grid of strata and locating the cell of each set point.
 #include "strata_grid.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // strata_grid.h — the grid of strata of one stratified set of M points in 1, 2 or 3 dimensions.
 //
 // Rule (documented in shim/README.md):

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stratified_avx512.cpp — the progressive stratified batch (pattern_stratified.cpp, progressiveChunks) with AVX-512
 // and GFNI intrinsics, 16 points per step: the same values, computed as progressivePoint does (simd_avx512.h).
 #include "batch_isa.h"

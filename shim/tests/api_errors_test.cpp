@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // api_errors_test.cpp — every error path of the C ABI returns the right status and a message naming the
 // argument; nothing crashes. Runs against libstipple.so itself, as hosts see it.
 #define BOOST_TEST_MODULE api_errors

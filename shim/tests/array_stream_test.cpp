@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // array_stream_test.cpp — array streams (ABI 1.2) and the 1.2 pattern calls, through stipple.hpp as a host sees
 // them: k values per sample stratified over the pixel's N * k values, unbiased, independent of call-order
 // streams; the batch call equal to the per-sample call; the cursor's batches equal to direct calls.

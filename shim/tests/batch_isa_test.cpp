@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // batch_isa_test.cpp — the batch kernels compiled per ISA (batch_isa.h) give the per-point values bitwise.
 // For every variant this CPU runs (baseline, AVX2, AVX-512), forced in turn: fill_pixel equals sample at every
 // index and stream_fill equals stream, for independent, stratified, poisson and sobol, arity 1..3, N from 1 to 2^18

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // ctest-labels: statistical
 // battery_test.cpp — the fast statistical subset of shim_battery (bench/battery.cpp), fixed seeds.
 //

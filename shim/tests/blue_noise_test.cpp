@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // ctest-labels: unit;statistical
 // blue_noise_test.cpp — what STIPPLE_SAMPLER_FLAG_BLUE_NOISE promises beyond every pixel's set (sobol_pmj02_test).
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // correlation_test.cpp — no correlation between dimensions, nor between neighbouring pixels.
 //
 // For each pattern x N (16, 256) x pair of streams A, B: pairs (A_i, B_i) of one sample index i. Pairs: (dimension

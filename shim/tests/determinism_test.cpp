@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // determinism_test.cpp — every value is a pure function of (seed, pixel, sample, dimension): the same from any
 // thread, in any call order, and random access (stipple_sampler_sample) equals the batch call bitwise.
 #define BOOST_TEST_MODULE determinism

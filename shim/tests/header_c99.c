@@ -1,3 +1,5 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Copyright 2026 The stipple authors */
 /* header_c99.c — the public header must compile as strict C99 (-std=c99 -pedantic -Wall -Wextra -Werror) and,
  * compiled as C++ (-x c++), as strict C++20. Also checks the sizes the ABI promises on LP64. */
 #include <stipple/stipple.h>

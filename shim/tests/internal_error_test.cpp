@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // internal_error_test.cpp — a failure that is a bug in the library (any exception other than stipple::detail::Error or
 // std::bad_alloc) reaches the host as STIPPLE_ERROR_INTERNAL with its text, the library's version and where to
 // report it; argument errors keep their own message without that note.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // kit_with_internals_test.cpp — one translation unit with the public C++ kit (stipple.hpp: stipple::Sampler,
 // stipple::Error) and every internal header of the library (stipple::detail): the two never clash, and a kit
 // sampler is the internal sampler its handle names.

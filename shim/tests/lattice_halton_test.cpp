@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // ctest-labels: unit
 // lattice_halton_test.cpp — what the lattice and halton constructions promise, exactly (no alpha).
 //

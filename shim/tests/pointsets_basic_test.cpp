@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pointsets_basic_test.cpp — the contract of the Poisson point-set generators (shim/src/pointsets): exactly n
 // points, every coordinate in [0,1) (never 1.0), bitwise determinism in (dim, n, seed), termination for every
 // small n, no throw on invalid input; and the relative radius rho checked against sets whose value is known.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pointsets_quality_test.cpp — the quality claims of shim/POINTSETS.md at fixed seeds (deterministic, so these
 // are regression bounds on measured values, not hypothesis tests):
 //   - poisson 2D: rho >= 0.85 for every N >= 16 of the list, every seed; 3D rho >= 0.83; 1D rho >= 0.80 (n >= 8).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pointsets_threads_test.cpp — the generators are pure functions with no shared state: the same (dim, n, seed)
 // gives bitwise the same set whether generated alone or while other threads generate (run under TSan too).
 #define BOOST_TEST_MODULE pointsets_threads

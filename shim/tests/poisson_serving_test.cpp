@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson_serving_test.cpp — serving keeps what generation made: a served pixel set has exactly M points, all
 // distinct, and the same relative radius rho as the stored set it came from (the torus maps are isometries);
 // the cache stays within its byte bound. The quality of the stored sets is tested by the pointsets_* tests.

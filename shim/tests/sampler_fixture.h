@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // sampler_fixture.h — helpers shared by the shim tests: build samplers through the C++ kit, read whole pixels
 // through the C API.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // ctest-labels: unit;statistical
 // sobol_pmj02_test.cpp — what the sobol and pmj02 constructions promise, and the blue-noise flag.
 //

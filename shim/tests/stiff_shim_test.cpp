@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stiff_shim_test.cpp — extreme arguments of the C ABI: N = 1, 2, 3, primes and the maximum 2^20 (one
 // above it is a clear error), seeds 0 and 2^64-1, pixel coordinates up to 2^32-1, every pattern and arity.
 // Expected outcome everywhere: status OK, every value finite and in [0, 1) (never 1.0, never negative), the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // strata_grid_test.cpp — the grid rule and the cell map for every M up to 2000 (and spot checks up to 2^22):
 // cellOf maps the M set points to M distinct cells of the grid, a padded grid misses fewer cells than it has
 // lines and at most one per line, and the aspect of an exact factorisation is at most 2.

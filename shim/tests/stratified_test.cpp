@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stratified_test.cpp — one sample per stratum for every N (square, non-square, prime), arity and k; the grid
 // rule of shim/README.md (exact most-square factorisation when its aspect is <= 2, else the padded grid).
 #define BOOST_TEST_MODULE stratified

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stream_range_test.cpp — every value of every pattern, arity, k and N lies in [0, 1); info matches the layout.
 #define BOOST_TEST_MODULE stream_range
 #include "sampler_fixture.h"

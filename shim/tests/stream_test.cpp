@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stream_test.cpp — streams (no declared layout) and sample indices past N.
 //
 // Statistical checks use fixed seeds and alpha = 0.01, Sidak-corrected over the checks of each test case.

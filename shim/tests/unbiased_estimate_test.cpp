@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // unbiased_estimate_test.cpp — every pattern gives unbiased estimates of integrals with known values.
 //
 // For each pattern x arity (1, 2, 3) x N (16, 256): 512 pixels, each an independent estimate (the mean of the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // uniformity_test.cpp — every sample of every pattern is uniformly distributed over [0,1)^arity.
 //
 // For each pattern x arity (1, 2, 3) x N (1, 7, 16, 97) one sample index (N/2) is read in 3200 pixels and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The main of every Boost.Test executable. Test sources are compiled with the precompiled Boost.Test header
 // (testing/CMakeLists.txt), which comes before their first line, so the `#define BOOST_TEST_MODULE` they keep
 // generates nothing there; the main is this one, and the master test suite is named after the executable

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Replays a libFuzzer harness's seed corpus and every input that once crashed it through the same
 // LLVMFuzzerTestOneInput, built by gcc without libFuzzer. A broken expectation in the harness traps, which fails
 // this test. STIPPLE_FUZZ_DIR names the part's fuzz folder; STIPPLE_FUZZ_CORPUS and STIPPLE_FUZZ_REGRESSIONS the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // matrix_fuzzer.cpp — libFuzzer harness for the validation matrix loader (validation/README.md format). The input
 // is parsed as the text of "fuzz/matrix.yaml" through parseMatrix (the same code loadMatrix runs on a file).
 // Expected: a Matrix that keeps the documented invariants, or a MatrixError whose message starts with the file

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // provenance_fuzzer.cpp — libFuzzer harness of the reference cache's reader: the provenance JSON of an entry is
 // parsed and verified against the key, size and pixel checksums of a fixed 3x2 reference. Expected: a
 // Provenance or a std::runtime_error; an entry verifies only when its key material, size and both checksums are

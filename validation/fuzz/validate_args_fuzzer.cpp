@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // validate_args_fuzzer.cpp — libFuzzer harness of stipple-validate's command-line parser. The input is split at
 // NUL bytes into arguments (at most 64). Expected: Args within the documented ranges, or a UsageError with a
 // message; any other exception, a crash or a sanitizer report is a finding.

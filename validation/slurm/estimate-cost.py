@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Estimates a matrix's CPU cost per scene (to size a Slurm array) from a timed sample of its cells.
 
 Method: every scene of MATRIX is rendered at its resolved settings (integrator, depth, patterns, every spp) but at

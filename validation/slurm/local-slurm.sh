@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # A one-node Slurm on this machine, for tests and trials: MUNGE, slurmctld and slurmd run as root with a
 # configuration written for this host (its real CPU count and memory from `slurmd -C`), plugins that need no
 # cgroup set-up (proctrack/linuxproc, task/none), no accounting, all state, logs and keys under one state folder

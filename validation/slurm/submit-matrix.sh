@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Submits a validation matrix to Slurm as an array job, one task per shard, and a merge job that runs when every
 # task has succeeded (--dependency=afterok). Every path is made absolute: the tasks, the merge job and the shared
 # reference cache must see the same filesystem. The job scripts are fixed text: paths and counts reach them as

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Regression against a stored run (--baseline results.json): error beyond the two runs' intervals or
 // time beyond a budget factor fails.
 #pragma once

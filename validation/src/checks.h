@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Evaluates the matrix's claims against a run's results: PASS, FAIL or NOT SEPARATED, with the figures.
 #pragma once
 

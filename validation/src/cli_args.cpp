@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
+
 #include "cli_args.h"
 
 #include <stipple/render/input_limits.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple-validate's command line, parsed apart from main so the fuzzer (validation/fuzz) can drive it.
 #pragma once
 

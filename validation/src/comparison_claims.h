@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The compare check: pattern A against pattern B per scene and region, per sample (equal spp) or per cost (equal
 // CPU seconds), on MSE or mean FLIP, judged with equivalence.h: EQUIVALENT (inside the margin), BETTER, WORSE or
 // NOT SEPARATED, then against what the check expects (PASS / FAIL / NOT SEPARATED).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Equal-time efficiency: the study's question "at the same render time, which pattern has the least error?".
 // Per seed, efficiency = 1 / (MSE_corrected · CPU seconds): a pattern twice as efficient reaches a given MSE in
 // half the time. Patterns are ranked by the geometric mean over seeds, with a 95% t interval on the log scale

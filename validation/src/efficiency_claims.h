@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The equal_time check: per scene (and per region of the scene), the patterns' equal-time efficiency ranking
 // with 95% intervals, the claimed order judged pair by pair (PASS / FAIL / NOT SEPARATED), and the study's own
 // conclusion printed beside the measured one.

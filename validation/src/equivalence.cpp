@@ -1,3 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
+
 #include "equivalence.h"
 #include "text.h"
 

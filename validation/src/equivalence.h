@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Deciding "better", "worse" and "as good as" between two patterns' errors with few seeds.
 //
 // A pattern's error in a scene is the mean over K seeds of a per-pixel error summed over the image (squared error

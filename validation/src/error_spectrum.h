@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Is a render's error white or blue? The power spectrum of its luminance error (render − reference), radially
 // averaged, summarised as the ratio of the mean power at high frequencies (0.25–0.5 cycles per pixel) to the
 // mean power at low frequencies (above 0, up to 0.125 cycles per pixel): 1 for white noise, above 1 for

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The command template of an external renderer (external_renderer.h): an argument vector whose arguments may
 // hold placeholders {scene}, {pattern}, {spp}, {seed}, {width}, {height}, {output}. Each placeholder is replaced
 // inside its own argument: an argument never splits, nothing is interpreted (no shell, no quoting, no globbing).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // An external renderer: a host renderer run as a program, one process per image, from a command template the
 // matrix gives (validation/README.md, "Validating a host renderer"). The command is an argument vector; each
 // placeholder ({scene}, {pattern}, {spp}, {seed}, {width}, {height}, {output}) is replaced inside its argument,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // One list of fields per record type: its JSON object (written and read back) and its CSV row and header all
 // come from that list, so a column is added in one place.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // An exclusive advisory lock on a file (flock), held for the object's lifetime: several processes — shards of
 // one array job on one machine or on a shared filesystem — that need the same reference take turns, so one
 // renders it and the others read what it published.

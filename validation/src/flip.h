@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // FLIP (Andersson, Nilsson, Akenine-Möller, Oskarsson, Åström, Fairchild: "FLIP: A Difference Evaluator for
 // Alternating Images", HPG 2020), the LDR version: a per-pixel perceptual difference in [0, 1] between two
 // sRGB images seen at a given number of pixels per degree of visual angle.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Error of a render against a reference: the study's RMS (its equation 1) and the reference's noise floor.
 // Images are the renderer's Image (a plain struct; this file needs no renderer code).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple-validate: runs a YAML matrix of scenes × patterns × spp × seeds through the renderer in-process,
 // measures RMS against a cached reference and render time, checks the matrix's claims and writes a report.
 #include <algorithm>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The validation matrix: which scenes, patterns, sample counts and seeds to run, how to make the reference,
 // and which claims to check. Parsed from YAML (format in validation/README.md); every error names
 // file:line:column and, for unknown names, the name and what is allowed.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // --merge: the results of shard folders (stipple-validate --shard i/n) combined into the results a single run
 // makes, checked for completeness: every cell × seed of the matrix exactly once, one renderer version.
 #pragma once

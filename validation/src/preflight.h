@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Everything that can fail before the first cell renders is checked first, so a run does not spend an hour and
 // then fail on a missing baseline or an unwritable folder: the baseline file reads as a results.json, the cache
 // folder takes a file, and every scene file parses (a scene that does not is reported now and skipped later).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Progress of a run on stderr: a redrawn bar (work done / total, ETA) on a terminal, plain lines otherwise
 // (CI logs, pipes). Work is counted in samples per pixel: a cell at 16 spp is 16, a reference at 2048 spp is 2048,
 // so the references a run renders are in its ETA; while one renders (minutes, with no cell finishing) a line

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The reference image of a scene (independent pattern at high spp), rendered once and cached as EXR + the
 // variance-of-the-mean EXR + provenance JSON, keyed by everything that changes its pixels. The reference is the
 // mean of two independent half-spp renders; their difference gives the variance (see the .cpp for why).

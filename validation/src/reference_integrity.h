@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // What makes a cached reference trustworthy: its provenance names the full key it was rendered for and a
 // checksum of the pixel data of both EXRs. The cache uses an entry only when all of it verifies; anything else
 // (edited provenance, wrong or flipped pixels, a truncated file, a missing part) is re-rendered and replaced.

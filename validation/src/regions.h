@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Regions of an image named by the matrix (the study's soft shadows, caustic, out-of-focus foreground): their
 // pixel rectangles, their error against the reference and their share of the reference's noise floor.
 #pragma once

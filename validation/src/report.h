@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The report folder: results.csv / results.json, gnuplot log-log plots per scene, index.html with the
 // tables, plots, crops, checks and the matrix text. Needs no renderer: crops are PNGs already written
 // into <dir>/crops by whoever rendered them.

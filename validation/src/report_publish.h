@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // A report folder is all-or-nothing: it is written into a temporary folder beside the target and swapped in
 // whole (renameat2 RENAME_EXCHANGE, then the old one is removed), so a reader sees the old report or the new one,
 // never a mix, and the folder holds only the current run's files. An interrupted run leaves the old report and a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // What a run measured: one row per cell × seed, per-scene facts (load, BVH build, reference), and the
 // per-cell aggregates over seeds. Written as results.csv / results.json; results.json reads back for
 // --merge and --baseline.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The renderer's side of a run's fingerprint (shard_fingerprint.h): the render settings a matrix scene resolves
 // to, and the fingerprint of a whole run, loading the scenes a shard did not render so that every shard records
 // every scene.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The fingerprint of a run: everything that decides whether its rows can be put beside another run's — the
 // matrix as resolved (scenes with their resolved render settings, patterns, spp, seeds, reference, crop, checks),
 // the scene files' content hashes, the renderer's version and the shim's identity. Every run (single or shard)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Small statistics used by the validation report: means, Student-t intervals, medians and the
 // least-squares slope of log RMS against log spp with its interval. Student's t and Welch's degrees of freedom
 // come from statistics/ (<stipple/statistics/student_t.h>).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The small text helpers every writer of validation's output shares: printf-style formatting into a string and
 // HTML escaping.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Timing claims that survive a busy machine. A render's cost is measured twice: wall seconds (what a user waits)
 // and thread CPU seconds summed over the render's workers (what the cores spent on it; it does not grow when
 // other processes take the cores). The two patterns of a claim render back to back within each (spp, seed)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The report's verdicts: a headline (claims PASS / FAIL / NOT SEPARATED, the machine and its load, the study's
 // question answered per scene in one sentence), the equal-time efficiency table per scene × region × pattern
 // with intervals, the reference's noise floor as a share of each cell's MSE, heavy-tailed cells marked with

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Things planted in a reference cache are never followed and never block a run:
 #  - a FIFO in place of a cached EXR is reported as not a regular file and the entry is rendered again (the run
 #    ends; before, it waited forever on the FIFO);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Checks on synthetic results: each outcome (PASS, FAIL, NOT SEPARATED) is reached for the right reason;
 // the baseline comparison and results.json round trip.
 #define BOOST_TEST_MODULE validation_checks

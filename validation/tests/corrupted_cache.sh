@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # A cached reference is used only when it verifies. Each corruption (a valid EXR of the right size with the wrong
 # content, flipped bytes, edited provenance, a truncated EXR, a missing provenance) must be noticed, re-rendered
 # (never a reason to skip the scene), give the same RMS as the clean run, and leave an entry that verifies.

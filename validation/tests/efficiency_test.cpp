@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Equal-time efficiency on synthetic rows with known answers: the ranking, the ratio and its interval, the
 // floor share, the heavy-tail mark and the trimmed mean; and the equal_time check's three verdicts.
 #define BOOST_TEST_MODULE validation_efficiency

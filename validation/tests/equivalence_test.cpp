@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The block-variance intervals of equivalence.h: coverage by simulation with heavy-tailed errors (95% intervals
 // must hold the true error ratio in ≥ 93% of 300 synthetic cases per error law), and each verdict reached for its
 // reason. Fixed seeds: the figures are the same on every run.

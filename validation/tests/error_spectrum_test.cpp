@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The error spectrum's summary tells white from blue from low-frequency error on synthetic errors with known
 // spectra (fixed seeds).
 #define BOOST_TEST_MODULE validation_error_spectrum

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Runs a command and checks its exit status and output (stdout + stderr), so a test can demand that a
 # run FAILs with the right message (a crash or a different failure does not pass).
 # usage: expect_run.sh EXPECTED_STATUS REGEX [REGEX ...] -- COMMAND [ARGS ...]

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # stipple-validate driving an external renderer (shim/examples/analytic_host) through a matrix's command template.
 #  1. The matrix with --renderer PROGRAM: checks pass, report and results.json as for any matrix, every cell's CPU
 #     seconds measured from the child; a second run reads the reference from the cache.

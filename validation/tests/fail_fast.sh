@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # What can be checked before rendering is checked first: a missing or malformed --baseline, a cache folder that
 # cannot be written and an -o that is not a report folder each fail with exit status 2 before any reference or
 # cell is rendered: nothing rendered is logged, the cache stays empty, the report folder is not created. Those are

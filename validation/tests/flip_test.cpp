@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // FLIP's documented behaviour (Andersson et al. 2020): zero for identical images, values in [0, 1] with the
 // maximum for green against blue, symmetric, invisible detail (high frequency at a large viewing distance)
 // suppressed by the contrast sensitivity filters, and colour errors amplified where features differ.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The study's RMS and the reference noise-floor correction on synthetic images with known answers.
 #define BOOST_TEST_MODULE validation_image_metrics
 #include <boost/test/unit_test.hpp>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The matrix loader on hostile input: every file in bad-matrices/ starts with "# expect: <substring>" and must
 // fail with a MatrixError containing it and naming file:line:column; generated inputs (an endless device, a FIFO,
 // a file beyond the size limit, nesting deeper than the parser allows) fail at once with the limit named.

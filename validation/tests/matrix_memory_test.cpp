@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Loading a matrix takes memory in proportion to its file: the peak a load adds (measured in a child process,
 // ru_maxrss) stays within limits::kLoadBytesPerInputByte × the file's size + limits::kLoadBaseBytes for a matrix
 // of many scene entries. yaml-cpp's node tree took about 70 bytes per byte on the same file. Skipped under

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Matrix parsing: a good matrix reads back; malformed ones fail with file:line:column and name the culprit.
 #define BOOST_TEST_MODULE validation_matrix
 #include <boost/test/unit_test.hpp>

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # --merge must refuse shards that ran different matrices or builds, naming the first differing fingerprint field,
 # both values and both shard folders. Shard 1/2 always runs the base matrix; shard 2/2 runs a variant (image size,
 # max depth, reference spp, the scene file's content) or has its recorded renderer version edited. A control pair

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // mergeShards on synthetic shard folders: the union of the rows in the matrix's order, and an error naming the
 // folder for a duplicate row, a differing renderer version (through the fingerprint) and a missing row.
 #define BOOST_TEST_MODULE validation_merge

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Regions end to end: the equal-time and equal-spp claims are judged per region, the verdict headline and the
 # region crop grid are in the report, every region crop is at least 256 px on its long side, and every pattern's
 # crop has its error map beside it.

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Opens a report folder's index.html in headless Chromium at 800, 1280 and 1920 px and checks what a reader would
 see: no element (with every <details> opened) wider than the viewport, every image loaded, the headline's claim
 counts equal to results.json's, and every link resolving inside the folder (no network, no absolute paths; a link

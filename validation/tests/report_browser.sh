@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Makes a small report, copies its folder elsewhere (it must be self-contained) and checks the copy in headless
 # Chromium (report_browser.py). usage: report_browser.sh STIPPLE_VALIDATE MATRIX WORKDIR
 set -u

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Only a folder stipple-validate made is ever replaced, and --merge copies only what it should:
 #  - a folder with an index.html, results.json and other files (a website) is refused with exit 2, untouched;
 #  - --merge -o onto (or around) one of its own shard folders is refused with exit 2, the shard untouched;

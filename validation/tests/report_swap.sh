@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The report folder is all-or-nothing and holds only the current matrix's files:
 #  1. a folder reused for another matrix keeps none of the previous matrix's crops or plots;
 #  2. SIGTERM at any moment of a run leaves the previous report exactly as it was and no temporary folder;

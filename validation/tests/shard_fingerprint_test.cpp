@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The fingerprint --merge compares: field order, the first difference (values and absent fields), the matrix-only
 // fields, and the round trip through results.json.
 #define BOOST_TEST_MODULE validation_shard_fingerprint

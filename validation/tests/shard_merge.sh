@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Shard 1/2 + shard 2/2, merged, must give the same results rows as a single run (times excluded: the
 # last three CSV columns) and the same check outcomes.
 # usage: shard_merge.sh STIPPLE_VALIDATE MATRIX WORKDIR

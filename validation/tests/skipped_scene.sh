@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # A scene that cannot be loaded is skipped, not fatal: the single run and the merge of its shards both finish
 # the other scene, name the skipped one (output and results.json) and exit with status 3.
 # usage: skipped_scene.sh STIPPLE_VALIDATE MATRIX WORKDIR

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # On a one-node Slurm started here (validation/slurm/local-slurm.sh): a small matrix as a 4-task array job with
 # one shared, initially empty reference cache, then the dependent merge job. The merged results.json must equal a
 # single run's in every deterministic field (RMS and the other floats bitwise; times left out), and each

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # The Slurm scripts (validation/slurm) on hostile or careless arguments, without a cluster (sbatch is a stand-in
 # that keeps each job's script and environment; the test then runs them as a task would):
 #  - submit-matrix.sh: an OUTDIR holding $(...), backticks and a quote reaches stipple-validate as one literal

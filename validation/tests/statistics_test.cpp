@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Known answers for the statistics behind every interval and slope in the report.
 #define BOOST_TEST_MODULE validation_statistics
 #include <boost/test/unit_test.hpp>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Stiff and extreme inputs of validation's metrics, through its library API: references of zero,
 // images holding inf and NaN (counted and reported, never averaged in), sizes that differ (a clear error), and
 // what those do downstream (aggregates, slopes, results.json). Expected outcomes are exact.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The names the validation tests' matrices use, standing in for the shim's patterns and the renderer's
 // integrators (validation's core library, which these tests exercise, does not load either).
 #pragma once

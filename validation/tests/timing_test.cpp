@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Paired time ratios: the interval of the geometric mean, and the three verdicts each reached for its reason.
 #define BOOST_TEST_MODULE validation_timing
 #include <boost/test/unit_test.hpp>

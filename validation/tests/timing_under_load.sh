@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # A time claim judged while CPU hogs (one per core) compete for the cores: the true claim must not FAIL
 # (poisson / stratified ≤ 1.15: PASS, or NOT SEPARATED when the load blurs it), the false one (poisson-seed / stratified ≤ 1.05) must still FAIL.
 # usage: timing_under_load.sh STIPPLE_VALIDATE MATRIX WORKDIR

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Pinhole and thin-lens perspective cameras. fov spans the SHORTER image axis. Raster space: x right, y down,
 // pixel (x, y) covers [x, x+1) x [y, y+1). Besides primary rays it exposes what a bidirectional integrator
 // needs (pbrt-v3 PerspectiveCamera conventions):

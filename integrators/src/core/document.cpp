@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The compact document's builder: yaml-cpp's parser emits events, and each node becomes one record as it
 // arrives. Children of the containers still open wait on one scratch stack and move to the document's child
 // array when their container ends, so every child reference is written twice at most and memory stays linear

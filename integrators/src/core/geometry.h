@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Small vector math: Vec3, RGB spectrum, orthonormal frames, rays. Float throughout; accumulation in double
 // happens in the film only.
 #pragma once

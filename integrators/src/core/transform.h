@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Affine transforms (3x4, row-major) with their inverse, for shape placement and instances.
 #pragma once
 

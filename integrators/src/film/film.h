@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The film: a box filter of one pixel (every sample lands in the pixel that drew it), double accumulation and a
 // per-pixel running mean and variance (Welford). Non-finite samples are counted and never accumulated.
 // Each pixel is written by the one thread that renders its tile, so no locking is needed.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Image output: float EXR with the project's metadata vocabulary through OpenImageIO, and an sRGB PNG preview:
 // through the user's OpenColorIO config ($OCIO: its scene_linear role to its default display and view) when one
 // is set, else OIIO's built-in linear -> sRGB. Both are written to a temporary file beside the target and renamed

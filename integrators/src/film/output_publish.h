@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Publishing one render's outputs together: the EXR and its PNG preview are both written to temporaries beside
 // their targets and renamed into place by renameTogether (publish_journal.h): a SIGINT / SIGTERM waits for both
 // renames, and a SIGKILL between them is completed by the next run's sweep, so a new EXR never stays beside an

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Direct illumination with multiple importance sampling (Veach's thesis ch. 9, the "MIS" scene): at the first
 // surface hit, k light samples and k BSDF samples (k = light_samples), combined with the power heuristic. The
 // diagnostic strategies "direct-light" and "direct-bsdf" use one technique alone (weight 1), so the three can

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The integrator interface. The render loop (renderer.cpp) declares "pixel" (and "lens" for a thin-lens camera),
 // asks the integrator to declare the rest, creates the shim sampler, then calls Li once per camera sample from
 // the thread that owns the pixel's tile.

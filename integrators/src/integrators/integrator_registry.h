@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Factories of the integrators makeIntegrator knows.
 #pragma once
 

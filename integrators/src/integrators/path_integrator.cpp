@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Unidirectional path tracing with next-event estimation and MIS (power heuristic, one light sample and one
 // BSDF sample per vertex), as pbrt-v4's PathIntegrator.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Area lights: emissive triangle meshes, parallelograms (quads) and spheres, one- or two-sided, constant
 // radiance. All in world space. Densities:
 //   sampleLi / pdfLi: SOLID ANGLE at the reference point (area density converted in one place, toSolidAngle).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Materials and their BSDFs. Everything works in the local shading frame (z = the surface normal as built,
 // outward for closed shapes); directions point away from the surface. Conventions:
 //   f(wo, wi)       BSDF value without the cosine; 0 for delta lobes.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Isotropic GGX (Trowbridge-Reitz) microfacet distribution with visible-normal sampling (Heitz 2018, as in
 // pbrt-v4), plus the Fresnel terms the materials use. All directions in the local shading frame (z = normal).
 #pragma once

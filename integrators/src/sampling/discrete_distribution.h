@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // A discrete distribution over n items proportional to given weights: used to choose a light by power (the
 // "light choice" of every integrator, BDPT included) and a triangle by area inside a mesh light.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // A shim sampler for one render plus the per-thread cache and the per-(pixel, sample) view integrators read.
 // Values are drawn lazily, a dimension at a time: the first read of dimension d by any sample of a pixel asks the
 // shim for all N samples of d in that pixel (stipple_sampler_fill_pixel, the batch call), so a dimension that no

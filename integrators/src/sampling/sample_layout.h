@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The dimension layout a render declares to the shim: an ordered list of named dimensions (arity 1-3, k values
 // per pixel sample). Integrators add only what the scene needs, so a scene "asks only for what it uses".
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Finds and dlopens libstipple, checks its ABI, and hands out its function table. The renderer never links the
 // shim: every random number it uses comes through this table.
 #pragma once

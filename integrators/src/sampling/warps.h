@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Warps from [0,1)^n to the domains the renderer samples; each documents the measure of its pdf.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Triangle mesh files: PLY (ascii and binary_little_endian; float/double x y z; a face list property
 // vertex_indices/vertex_index of any integer type; triangles and quads) and a small OBJ subset (v, f with
 // triangles/quads/polygons fanned, v/vt/vn index forms, negative indices). Errors throw MeshFileError naming the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The scene as the integrators see it: Embree geometry (triangle meshes, analytic spheres as user geometry,
 // one level of instances), materials, world-space lights with a by-power light choice, and ray queries that
 // return a fully resolved surface hit.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The parsed scene: what the YAML says, in world or object space, before any acceleration structure exists.
 // The loader (scene_loader.cpp) fills it; RenderScene (render_scene.h) turns it into Embree scenes and lights.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The scene-specific input bounds (limits in <stipple/render/input_limits.h>): coordinates the ray tracer can
 // represent, checked on the parsed description before any Embree object exists.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Procedural triangle meshes for the scene format's shapes, with outward-facing (CCW) triangles.
 #pragma once
 

@@ -1,3 +1,5 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Copyright 2026 The stipple authors */
 /*
  * stipple.h — the C ABI of libstipple: deterministic sample streams for Monte Carlo rendering.
  *

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // stipple.hpp — the header-only C++ kit over the C ABI (stipple.h). C++11 and later; works with and without
 // exceptions.
 //

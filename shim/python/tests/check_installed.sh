@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # cmake --install of the library and the Python package into a temporary prefix: the installed package, put on
 # PYTHONPATH as the README says, finds the installed library by itself (no $STIPPLE_LIBRARY, no build tree, no
 # loader path) and serves samples equal to the build tree's library.

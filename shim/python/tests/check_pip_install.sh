@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Installs the package the way its README says — a fresh virtual environment that sees the system's NumPy, pip
 # offline without build isolation — from a copy of the source, then runs the README's example with the
 # installed package (not the source) against the library given.

@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Arguments are checked against their C types and the library's limits before any call: nothing is cut to 32
 bits, nothing huge is allocated for a refused count, non-integers are refused, and every refusal is a
 StippleError naming the argument. A failed constructor leaves nothing for __del__ to trip over, and a library

@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """The package's samplers: shapes and dtypes, [0, 1), batch calls equal single calls, every pattern listed and
 served, the blue-noise flag, stratification of a block past N, signed pixels, declared layouts, errors carrying
 the library's message, and an unbiased streamed estimate of an edged integral.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // cell_grid.h — a uniform grid of G^D cells over the unit torus, built by a counting sort.
 //
 // Points are copied in cell order (cellStart[c] .. cellStart[c+1]) so a neighbourhood scan reads memory

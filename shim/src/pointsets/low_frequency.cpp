@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // low_frequency.cpp — see low_frequency.h.
 //
 // exp(2 pi i k.x) for every mode comes from per-axis powers of exp(2 pi i x) (one sincos per point and axis),

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // low_frequency.h — cancelling the lowest Fourier modes of a toroidal point set by a smooth displacement.
 //
 // A set's density modes S(k) = sum_i exp(-2 pi i k.x_i) at small k are what smooth integrands read: the error

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // orthant_tree.h — the quadtree (D = 2) and octree (D = 3) of the study's dart throwing.
 //
 // A bucket region tree over the unit cube: a leaf holds up to kLeafCapacity points, then splits into 2^D

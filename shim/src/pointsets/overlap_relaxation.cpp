@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // overlap_relaxation.cpp — see overlap_relaxation.h.
 //
 // Pairs come from a uniform grid of g^D cells of side >= R, rebuilt by a counting sort before every pass

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // overlap_relaxation.h — spreading points on the torus until no two are closer than a radius.
 //
 // Each point is a soft disk (ball) of diameter R. A Gauss-Seidel pass pushes every pair closer than R

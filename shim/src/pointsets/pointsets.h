@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // pointsets.h — Poisson-disk point-set generators of the shim (internal C++, never exported).
 //
 // All sets live on the unit torus [0,1)^dim, dim in 1..3, stored interleaved (x0,y0,x1,y1,...).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson.cpp — "poisson": toroidal Poisson-disk sets of exactly N points that integrate at least as well as
 // jittered sampling, fast.
 //

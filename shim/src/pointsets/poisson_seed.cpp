@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson_seed.cpp — the study's Algorithm 1 (dart throwing with a shrinking radius), kept faithfully as
 // the baseline every Poisson claim is measured against.
 //

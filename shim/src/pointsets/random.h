@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // random.h — the small deterministic generator the point-set code draws from.
 //
 // SplitMix64 (Steele, Lea, Flood 2014): one 64-bit add and a mix per draw, passes BigCrush, and any

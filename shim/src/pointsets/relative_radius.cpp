@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // relative_radius.cpp — toroidal nearest-neighbour distances and the relative radius rho = d_min / d_max.
 //
 // Nearest neighbours by a cell grid (about one point per cell) searched in growing rings of cells: after

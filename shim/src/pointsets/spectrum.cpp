@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // spectrum.cpp — see spectrum.h. O(N K^2) per set with per-point phase tables; P(-k) = P(k) halves it.
 #include "spectrum.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // spectrum.h — the periodogram of 2D toroidal point sets: the isotropy check of the Poisson sets.
 //
 // On the unit torus the Fourier series of a point set is exact at integer frequencies k:

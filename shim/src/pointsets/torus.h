@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // torus.h — the unit torus [0,1)^d: wrapping, minimum-image differences, packing distances.
 #pragma once
 

@@ -1,3 +1,5 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* Copyright 2026 The stipple authors */
 /* consumer.c — links the installed libstipple directly and draws one stratified pixel. */
 #include <stipple/stipple.h>
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // consumer_dlopen.cpp — a dlopen host of the installed package (stipple::headers only, nothing linked): the kit
 // over the function table of the library named on the command line.
 #include <stipple/stipple.hpp>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // consumer_kit.cpp — a C++11 host without exceptions: the installed stipple.hpp, linked, one array through the cursor.
 #include <stipple/stipple.hpp>
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // FNV-1a 64 over bytes and files: the one content hash behind scene hashes, the shim's identity, the
 // reference-cache keys and the cached references' pixel checksums. Not cryptographic; it tells apart inputs,
 // nobody forges them. Header-only, so validation's renderer-free core uses the same one.

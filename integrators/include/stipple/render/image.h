@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The renderer's image: what film produces, image I/O reads and writes and results carry.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Reading and writing images (OpenImageIO underneath): float EXR with the project's metadata, sRGB PNG previews.
 #pragma once
 

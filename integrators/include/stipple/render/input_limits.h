@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Bounds on what an input file or argument may ask for, checked before anything is allocated, so a hostile or
 // mistaken input ends in a clear error naming the limit and the offending value instead of std::bad_alloc, a
 // stack overflow or an Embree assertion. GUARANTEES.md lists the same numbers.

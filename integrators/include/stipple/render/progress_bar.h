@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The one progress bar the tools draw on a terminal's stderr: "[#########.....................]", and the
 // estimate of the time left that goes beside it.
 #pragma once

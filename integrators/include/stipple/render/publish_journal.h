@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Publishing several temporaries together, recoverably: before the first rename a journal naming every
 // temporary and its target is written (to a temporary, then renamed into place, so it exists whole or not at
 // all); the renames follow in order; the journal is removed last. A process killed in between (SIGKILL, which no

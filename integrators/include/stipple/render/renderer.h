@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The renderer library's public C++ API: what stipple-render and stipple-validate use.
 // Contract between integrators/ (implements it) and validation/ (drives it in-process). Its vocabulary (Image,
 // SceneError, image I/O, the renderer's identity) lives in headers of its own, below the renderer's layers.

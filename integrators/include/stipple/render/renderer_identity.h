@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // What names the renderer in results, image metadata and reference-cache keys.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The error a scene file that cannot be loaded raises: scene loading throws it, every caller catches it.
 #pragma once
 

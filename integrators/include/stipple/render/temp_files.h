@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Temporary files and folders that become outputs by rename. Every temporary is named
 //   <dir>/.<target name>.stipple-tmp-<host>-<pid>-<n>[<extension>]
 // beside its target (same file system, so the rename is atomic), registered while it exists, removed when the

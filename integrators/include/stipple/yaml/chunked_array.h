@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // An append-only array in fixed-size chunks: growing it never copies what is stored and never holds two copies
 // at once, so its peak memory is its size plus one chunk (a std::vector's doubling peaks at three times its size
 // while it moves). Used for a parsed document's node records and child lists.

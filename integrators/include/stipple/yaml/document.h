@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // A parsed YAML document in compact form, and the read-only view of its nodes that the loaders use.
 //
 // yaml-cpp's own node tree costs about 60-70 bytes of memory per byte of input. Here a document is three flat

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Strict YAML input for every file the project reads (scenes, validation matrices): positions as
 // file:line:column, duplicate keys rejected (yaml-cpp keeps both silently), unknown keys named with the allowed
 // ones, and one number parser (the whole scalar, finite) behind every numeric field.

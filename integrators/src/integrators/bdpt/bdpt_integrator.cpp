@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Bidirectional path tracing: a camera subpath z_0 .. z_{t-1} and a light subpath y_0 .. y_{s-1} per camera
 // sample, connected by every strategy (s, t) with t >= 1 and s + t - 2 <= max depth:
 //   s = 0       the camera subpath itself ends on an emitter;

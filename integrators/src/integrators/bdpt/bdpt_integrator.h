@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Bidirectional path tracing (Veach's thesis ch. 10, in the spirit of pbrt-v3's BDPTIntegrator). The factory,
 // makeBdptIntegrator, is declared in integrator_registry.h; this header holds what tests also need: the debug
 // variants that render one strategy, or one path depth, alone.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The multiple-importance weight of one BDPT strategy (power heuristic, beta = 2) over every strategy that could
 // have produced the same path (Veach's thesis 10.2). The full path x_0 ... x_{n-1} runs from the light end:
 // x_j = lightPath[j] for j < s, x_j = cameraPath[n-1-j] for j >= s. Strategy s' takes x_0 .. x_{s'-1} from the

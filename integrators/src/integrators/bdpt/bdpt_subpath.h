@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // BDPT's two random walks: the camera subpath z_0 (lens) .. and the light subpath y_0 (a light chosen by power)
 // .., each vertex carrying its throughput and its area densities from both ends (pdfFwd from its own walk;
 // pdfRev, from the other end, filled as soon as the next scattering direction is known). No Russian roulette:

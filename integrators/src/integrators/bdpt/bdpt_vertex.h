@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Vertices of BDPT subpaths and everything evaluated between two of them: BSDF / emission / importance values,
 // geometry terms and densities. Every density stored on a vertex is in AREA measure at that vertex; the
 // solid-angle densities returned by materials, lights and the camera become area densities in exactly one

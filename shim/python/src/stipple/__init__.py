@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """stipple — deterministic sample streams for Monte Carlo rendering, from libstipple.so.1, as NumPy arrays.
 
     import stipple

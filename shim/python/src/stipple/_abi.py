@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """The C ABI as ctypes sees it: structs, limits and the functions' signatures (stipple.h, ABI 1.1)."""
 import ctypes
 

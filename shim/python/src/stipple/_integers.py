@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Integer arguments checked against their C types before they reach ctypes, which would cut them silently
 (2**32 + 16 as a uint32_t is 16)."""
 import operator

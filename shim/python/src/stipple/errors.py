@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """The package's one exception type, for the library's failures and for arguments refused before any call."""
 
 # The C ABI's status codes (stipple.h).

@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """Loading libstipple.so.1: where the package looks for it, and what the loaded library offers."""
 import collections
 import ctypes

@@ -1,3 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
+
 """A sampler: pattern, N samples per pixel, seed, optional blue noise and declared layout; NumPy arrays out."""
 import ctypes
 import warnings

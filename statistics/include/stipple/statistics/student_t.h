@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Student's t distribution and Welch's unequal-variance comparison of two means (Welch-Satterthwaite degrees of
 // freedom): the one implementation validation's intervals and the tests' decisions share.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // Bad-input corpora: a folder of files, each starting with "# expect: <substring>", that a loader must reject with
 // a message containing that substring and naming where (file:line[:column]). Shared by the scene and matrix
 // loaders' tests; include after <boost/test/unit_test.hpp>.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // What the command-line fuzz harnesses share: libFuzzer bytes as an argument vector, and a check that stops the
 // fuzzer on a broken promise.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The peak memory a piece of work adds, measured in a child process: fork, note the child's ru_maxrss (which
 // starts at the resident size it inherits), run the work, note it again and send the difference back. Sanitizer
 // builds (shadow memory, quarantine, redzones) change what memory means: tests skip there (kUnderSanitizer).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // The statistics the project's tests decide with: Pearson's chi-square with pooling of sparse cells, Sidak's
 // per-test level, Student's and Welch's t-tests (in the words the tests use; Student's t and Welch's degrees of
 // freedom are statistics/'s, <stipple/statistics/student_t.h>). Distributions come from Boost.Math.
