@@ -68,7 +68,7 @@ bool isShiftedLattice(const std::vector<float>& v, uint32_t arity, uint32_t log2
         const uint32_t k = static_cast<uint32_t>((uint64_t(d0) + (1u << 31 >> log2Points)) >> (32 - log2Points)) &
                            (points - 1);
         for (uint32_t c = 0; c < arity; ++c) {
-            const uint32_t expected = uint32_t(uint64_t(kLatticeVector[c]) * k % points) << (32 - log2Points);
+            const uint32_t expected = uint32_t((uint64_t(kLatticeVector[c]) * k % points) << (32 - log2Points));
             const uint32_t actual = toFixed(v[i * arity + c]) - toFixed(v[c]);
             const int32_t error = static_cast<int32_t>(actual - expected);
             if (error < -256 || error > 256) return false;
