@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Compares a built libstipple.so.1 against the committed baseline (shim/abi/libstipple.abi) and prints the
 # report. abidiff's exit code is a bit field: 1 error, 2 usage, 4 ABI change, 8 incompatible change.
 # Fails on the error/usage bits and on bit 8 (e.g. a removed function).

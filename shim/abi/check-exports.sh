@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Checks the product's surface: the dynamic symbol table defines only stipple_* functions (plus the STIPPLE_1.x
 # version nodes), every stipple_* function of the header is exported, and the SONAME is libstipple.so.1.
 #   usage: check-exports.sh <libstipple.so.1> <stipple.h>

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Installs the shim component of a build tree into a temporary prefix and checks what a host gets: the header,
 # libstipple.so.1 (SONAME link) and libstipple.so, a CMake package a consumer project can find_package and link,
 # and a pkg-config file that compiles and links the same consumer. The C++ consumers use stipple.hpp: one linked

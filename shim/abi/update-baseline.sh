@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The stipple authors
 # Regenerates shim/abi/libstipple.abi, the committed ABI baseline, from a built libstipple.so.1 (built with -g,
 # which shim/CMakeLists.txt adds in every configuration). Run it only when a release deliberately changes the ABI.
 #   usage: shim/abi/update-baseline.sh <path to libstipple.so.1>
