@@ -46,8 +46,7 @@ constexpr bool bijective1(const int32_t (&a)[2]) {
 }
 static_assert(bijective1(kMaps[0].a1) && bijective1(kMaps[1].a1));
 
-constexpr uint64_t kSymmetryIndex = 0x5e77u, kOffsetIndex = 0x0ff5u;
-constexpr uint64_t kOffsetStream = 0x0ff5e75a17ed0001ull; // keys the per-stratum offsets apart from the tile's key
+constexpr uint64_t kSymmetryIndex = 0x5e77u;
 
 } // namespace
 
@@ -75,22 +74,14 @@ LatticePixel::LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, u
 }
 
 void CrossPixelStrata::place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const {
-    // tent: the sub-cell order 0, 2, 4, ..., Q-2, Q-1, ..., 3, 1, so neighbouring values of c are neighbouring
-    // sub-cells also across the wrap.
-    // One mix per point: the stratum id is the counter of the tile's offset stream (ids are distinct per stratum).
-    const uint64_t offsets = hashAt(tileKey ^ kOffsetStream, stratum);
-    if (arity == 1) {
-        constexpr uint32_t Q = 4096;
-        const uint32_t c = (lattice.c[0] + uint32_t(offsets)) & (Q - 1);
-        const uint32_t t = c < Q / 2 ? 2 * c : 2 * (Q - 1 - c) + 1;
-        jitter[0] = (t << 20) | (jitter[0] >> 12);
+    const uint64_t offsets = hashAt(offsetKey(), stratum);
+    switch (arity) {
+    case 1: jitter[0] = jitterInSubCell<1>(lattice.c[0], offsets, 0, jitter[0]); return;
+    case 2:
+        for (uint32_t i = 0; i < 2; ++i) jitter[i] = jitterInSubCell<2>(lattice.c[i], offsets, i, jitter[i]);
         return;
-    }
-    constexpr uint32_t Q = 64;
-    for (uint32_t i = 0; i < arity; ++i) {
-        const uint32_t c = (lattice.c[i] + uint32_t(offsets >> (8 * i))) & (Q - 1);
-        const uint32_t t = c < Q / 2 ? 2 * c : 2 * (Q - 1 - c) + 1;
-        jitter[i] = (t << 26) | (jitter[i] >> 6);
+    default:
+        for (uint32_t i = 0; i < 3; ++i) jitter[i] = jitterInSubCell<3>(lattice.c[i], offsets, i, jitter[i]);
     }
 }
 

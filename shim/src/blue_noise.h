@@ -21,6 +21,7 @@
 // Other patterns refuse the flag (pattern_registry.h, BlueNoiseMode::Unsupported).
 #pragma once
 
+#include "hash.h"
 #include "patterns.h"
 
 #include <cstddef>
@@ -42,12 +43,28 @@ struct LatticePixel {
     LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use);
 };
 
+// Axis `axis` of a jitter (a 32-bit fraction of the stratum) moved into sub-cell tent((c + o) mod Q) of the stratum,
+// c the pixel's lattice value and o the axis' offset (bits 8 axis.. of `offsets`; 1D: its low 12 bits). tent: the
+// sub-cell order 0, 2, 4, ..., Q-2, Q-1, ..., 3, 1, so neighbouring values of c are neighbouring sub-cells also
+// across the wrap. Branch-free integer work, so the batch kernels vectorise it.
+template <uint32_t Arity>
+[[gnu::always_inline]] inline uint32_t jitterInSubCell(uint32_t latticeC, uint64_t offsets, uint32_t axis,
+                                                       uint32_t jitter) {
+    constexpr uint32_t kQLog2 = Arity == 1 ? 2 * kBlueNoiseTileLog2 : kBlueNoiseTileLog2, Q = 1u << kQLog2;
+    const uint32_t c = (latticeC + static_cast<uint32_t>(Arity == 1 ? offsets : offsets >> (8 * axis))) & (Q - 1);
+    const uint32_t t = c < Q / 2 ? 2 * c : 2 * (Q - 1 - c) + 1;
+    return (t << (32 - kQLog2)) | (jitter >> kQLog2);
+}
+
 // Where pixel (x, y) puts its point inside a stratum shared by the pixels of its tile.
 struct CrossPixelStrata {
     uint64_t tileKey; // hashed from (seed, pattern, tile, dimension[, stream arity][, block])
     LatticePixel lattice;
     CrossPixelStrata(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use)
         : tileKey(tileKey), lattice(tileKey, pixelX, pixelY, arity, use) {}
+    // The key of the tile's per-stratum offsets: a stratum's offsets are hashAt(offsetKey(), stratum id), one mix
+    // per point (the ids are distinct per stratum).
+    uint64_t offsetKey() const { return tileKey ^ 0x0ff5e75a17ed0001ull; }
     // The jitters (32-bit fractions of the stratum per axis) moved into the pixel's sub-cell of the stratum.
     void place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const;
 };

@@ -31,6 +31,37 @@ namespace {
     for (uint64_t i = 0; i < n; ++i) out[i] = unitFloat(hashAt(key, begin + i));
 }
 
+// The blue-noise batch: pointIndependent's values with the flag, a chunk of points at a time in loops the compiler
+// vectorises (per axis the value hash and its move into the sub-cell, then the interleaved stores); the offsets'
+// hash is one per point, shared by the axes.
+template <uint32_t Arity>
+[[gnu::always_inline]] inline void blueHashedFloats(uint64_t key, uint32_t first, uint32_t count, float* out,
+                                                    const CrossPixelStrata& blue) {
+    constexpr uint32_t kChunk = 64;
+    const uint64_t offsetKey = blue.offsetKey();
+    uint32_t lattice[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) lattice[c] = blue.lattice.c[c];
+    alignas(64) uint64_t offsets[kChunk];
+    alignas(64) uint32_t bits[Arity][kChunk];
+    for (uint32_t base = 0; base < count; base += kChunk) {
+        const uint32_t n = count - base < kChunk ? count - base : kChunk;
+        const uint64_t p0 = uint64_t(first) + base;
+        for (uint32_t i = 0; i < n; ++i) offsets[i] = hashAt(offsetKey, p0 + i);
+        for (uint32_t c = 0; c < Arity; ++c)
+            for (uint32_t i = 0; i < n; ++i)
+                bits[c][i] = jitterInSubCell<Arity>(
+                    lattice[c], offsets[i], c, static_cast<uint32_t>(hashAt(key, (p0 + i) * Arity + c) >> 32));
+        float* o = out + size_t(base) * Arity;
+        for (uint32_t i = 0; i < n; ++i)
+            for (uint32_t c = 0; c < Arity; ++c) o[size_t(i) * Arity + c] = static_cast<float>(bits[c][i] >> 8) * 0x1p-24f;
+    }
+}
+
+template <uint32_t Arity>
+void blueFloatsBaseline(uint64_t key, uint32_t first, uint32_t count, float* out, const CrossPixelStrata& blue) {
+    blueHashedFloats<Arity>(key, first, count, out, blue);
+}
+
 void hashedFloatsBaseline(uint64_t key, uint64_t begin, uint64_t n, float* out) { hashedFloats(key, begin, n, out); }
 #if defined(STIPPLE_BATCH_ISA_CLONES)
 [[STIPPLE_TARGET_AVX2]] void hashedFloatsAvx2(uint64_t key, uint64_t begin, uint64_t n, float* out) {
@@ -39,7 +70,26 @@ void hashedFloatsBaseline(uint64_t key, uint64_t begin, uint64_t n, float* out) 
 [[STIPPLE_TARGET_AVX512]] void hashedFloatsAvx512(uint64_t key, uint64_t begin, uint64_t n, float* out) {
     hashedFloats(key, begin, n, out);
 }
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX2]] void blueFloatsAvx2(uint64_t key, uint32_t first, uint32_t count, float* out,
+                                            const CrossPixelStrata& blue) {
+    blueHashedFloats<Arity>(key, first, count, out, blue);
+}
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void blueFloatsAvx512(uint64_t key, uint32_t first, uint32_t count, float* out,
+                                                const CrossPixelStrata& blue) {
+    blueHashedFloats<Arity>(key, first, count, out, blue);
+}
 #endif
+
+template <BatchIsa Isa, uint32_t Arity>
+void blueFloats(uint64_t key, uint32_t first, uint32_t count, float* out, const CrossPixelStrata& blue) {
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+    if constexpr (Isa == BatchIsa::Avx512) return blueFloatsAvx512<Arity>(key, first, count, out, blue);
+    if constexpr (Isa == BatchIsa::Avx2) return blueFloatsAvx2<Arity>(key, first, count, out, blue);
+#endif
+    return blueFloatsBaseline<Arity>(key, first, count, out, blue);
+}
 
 } // namespace
 
@@ -55,13 +105,28 @@ void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_
 #endif
         return hashedFloatsBaseline(key, begin, n, out);
     }
-    for (uint32_t i = 0; i < count; ++i) pointIndependent(key, dim, first + i, out + size_t(i) * dim.arity, blue);
+    switch (dim.arity) {
+    case 1: return blueFloats<Isa, 1>(key, first, count, out, *blue);
+    case 2: return blueFloats<Isa, 2>(key, first, count, out, *blue);
+    default: return blueFloats<Isa, 3>(key, first, count, out, *blue);
+    }
 }
 
 namespace {
 template <BatchIsa Isa>
 void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     fillIndependent<Isa>(set.key, dim, first, count, out);
+}
+
+// The registry keeps one blue-noise fill per pattern: it picks the ISA variant per call (one relaxed load).
+void blueFillForIsa(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                    const CrossPixelStrata& strata) {
+    switch (batchIsa()) {
+    case BatchIsa::Avx512: return fillIndependent<BatchIsa::Avx512>(key, dim, first, count, out, &strata);
+    case BatchIsa::Avx2: return fillIndependent<BatchIsa::Avx2>(key, dim, first, count, out, &strata);
+    case BatchIsa::Baseline: break;
+    }
+    fillIndependent<BatchIsa::Baseline>(key, dim, first, count, out, &strata);
 }
 } // namespace
 
@@ -82,7 +147,7 @@ constinit const PatternOps kIndependentPattern{
     .fillStrata =
         [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
            const CrossPixelStrata& strata) {
-            fillIndependent<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
+            blueFillForIsa(set.key, dim, first, count, out, strata);
         },
 };
 

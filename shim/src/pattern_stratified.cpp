@@ -164,9 +164,12 @@ struct ReversedLanes {
 };
 inline constexpr ReversedLanes kReversedLanes{};
 
-template <uint32_t Arity>
+// With Blue, the jitters are moved into the pixel's sub-cells as progressivePoint<Arity, true> does (blue_noise.h):
+// one 64-bit offsets hash per point, of its cell.
+template <uint32_t Arity, bool Blue = false>
 [[gnu::always_inline]] inline void progressiveChunks(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
-                                                     uint32_t count, float* out) {
+                                                     uint32_t count, float* out,
+                                                     const CrossPixelStrata* blue = nullptr) {
     constexpr uint32_t kChunk = 64;
     const uint32_t bits = grid.pointBits;
     const uint32_t mask = (1u << bits) - 1u;
@@ -177,6 +180,12 @@ template <uint32_t Arity>
         axisBits[c] = grid.axisBits[c];
         topShift[c] = 24 - axisBits[c];
         jitterShift[c] = 8 + axisBits[c];
+    }
+    uint64_t offsetKey = 0;
+    uint32_t lattice[3] = {0, 0, 0};
+    if constexpr (Blue) {
+        offsetKey = blue->offsetKey();
+        for (uint32_t c = 0; c < Arity; ++c) lattice[c] = blue->lattice.c[c];
     }
     alignas(64) uint32_t q[kChunk], cellKey[kChunk]; // cellKey: S(p), what 2D and 3D hash for the jitter
     alignas(64) uint32_t jitter[3][kChunk];
@@ -223,6 +232,14 @@ template <uint32_t Arity>
                 cell[1] = compactEvery3(r >> 3) >> (10 - axisBits[1]);
                 cell[2] = compactEvery3(r >> 2) >> (10 - axisBits[2]);
             }
+            if constexpr (Blue) {
+                uint64_t stratum = cell[0];
+                if constexpr (Arity >= 2) stratum ^= uint64_t(cell[1]) << 21;
+                if constexpr (Arity == 3) stratum ^= uint64_t(cell[2]) << 42;
+                const uint64_t offsets = hashAt(offsetKey, stratum);
+                for (uint32_t c = 0; c < Arity; ++c)
+                    jitter[c][i] = jitterInSubCell<Arity>(lattice[c], offsets, c, jitter[c][i]);
+            }
             for (uint32_t c = 0; c < Arity; ++c)
                 o[size_t(i) * Arity + c] = static_cast<float>(static_cast<int32_t>((cell[c] << topShift[c]) |
                                                                                    (jitter[c][i] >> jitterShift[c]))) *
@@ -237,7 +254,18 @@ template <uint32_t Arity>
                                                   uint32_t count, float* out) {
     progressiveChunks<Arity>(set, grid, first, count, out);
 }
-// AVX-512: hand-written (stratified_avx512.cpp).
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX2]] void progressiveBlueAvx2(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+                                                 uint32_t count, float* out, const CrossPixelStrata* blue) {
+    progressiveChunks<Arity, true>(set, grid, first, count, out, blue);
+}
+template <uint32_t Arity>
+[[STIPPLE_TARGET_AVX512]] void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
+                                                     uint32_t count, float* out, const CrossPixelStrata* blue) {
+    progressiveChunks<Arity, true>(set, grid, first, count, out, blue);
+}
+// AVX-512: hand-written (stratified_avx512.cpp); with the blue-noise flag, the compiler's vectorisation of
+// progressiveChunks.
 template <uint32_t Arity>
 void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
                             float* out) {
@@ -251,6 +279,10 @@ template <BatchIsa Isa, uint32_t Arity>
 void fillProgressive(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out,
                      const CrossPixelStrata* blue) {
     if (blue) {
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+        if constexpr (Isa == BatchIsa::Avx512) return progressiveBlueAvx512<Arity>(set, grid, first, count, out, blue);
+        if constexpr (Isa == BatchIsa::Avx2) return progressiveBlueAvx2<Arity>(set, grid, first, count, out, blue);
+#endif
         for (uint32_t i = 0; i < count; ++i)
             progressivePoint<Arity, true>(set, grid, first + i, out + size_t(i) * Arity, blue);
         return;
@@ -334,6 +366,17 @@ template <BatchIsa Isa>
 void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
     fillStratified<Isa>(set.key, dim, first, count, out);
 }
+
+// The registry keeps one blue-noise fill per pattern: it picks the ISA variant per call (one relaxed load).
+void blueFillForIsa(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                    const CrossPixelStrata& strata) {
+    switch (batchIsa()) {
+    case BatchIsa::Avx512: return fillStratified<BatchIsa::Avx512>(key, dim, first, count, out, &strata);
+    case BatchIsa::Avx2: return fillStratified<BatchIsa::Avx2>(key, dim, first, count, out, &strata);
+    case BatchIsa::Baseline: break;
+    }
+    fillStratified<BatchIsa::Baseline>(key, dim, first, count, out, &strata);
+}
 } // namespace
 
 extern const PatternOps kStratifiedPattern;
@@ -356,7 +399,7 @@ constinit const PatternOps kStratifiedPattern{
     .fillStrata =
         [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
            const CrossPixelStrata& strata) {
-            fillStratified<BatchIsa::Baseline>(set.key, dim, first, count, out, &strata); // per point: no ISA
+            blueFillForIsa(set.key, dim, first, count, out, strata);
         },
 };
 
