@@ -259,19 +259,21 @@ template <uint32_t Arity>
                                                  uint32_t count, float* out, const CrossPixelStrata* blue) {
     progressiveChunks<Arity, true>(set, grid, first, count, out, blue);
 }
-template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first,
-                                                     uint32_t count, float* out, const CrossPixelStrata* blue) {
-    progressiveChunks<Arity, true>(set, grid, first, count, out, blue);
-}
-// AVX-512: hand-written (stratified_avx512.cpp); with the blue-noise flag, the compiler's vectorisation of
-// progressiveChunks.
+// AVX-512: hand-written (stratified_avx512.cpp), with and without the blue-noise flag.
 template <uint32_t Arity>
 void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
                             float* out) {
     const ProgressiveKernelArgs args{set.orderSeed, set.valueSeed, set.jitterSeed, grid.pointBits,
                                      {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
     progressiveAvx512(args, Arity, first, count, out);
+}
+template <uint32_t Arity>
+void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
+                           float* out, const CrossPixelStrata* blue) {
+    const ProgressiveKernelArgs args{set.orderSeed, set.valueSeed, set.jitterSeed, grid.pointBits,
+                                     {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
+    const BlueSubCellArgs subCells{blue->offsetKey(), {blue->lattice.c[0], blue->lattice.c[1], blue->lattice.c[2]}};
+    progressiveBlueAvx512(args, subCells, Arity, first, count, out);
 }
 #endif
 

@@ -21,6 +21,14 @@ struct ProgressiveKernelArgs {
     uint32_t axisBits[3];
 };
 void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32_t first, uint32_t count, float* out);
+// The same with the blue-noise flag (blue_noise.h, CrossPixelStrata): the tile's offsets key and the pixel's lattice
+// values per axis.
+struct BlueSubCellArgs {
+    uint64_t offsetKey;
+    uint32_t lattice[3];
+};
+void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const BlueSubCellArgs& blue, uint32_t arity,
+                           uint32_t first, uint32_t count, float* out);
 
 // A poisson set served in its layered order (pattern_poisson.cpp): position p reads stored point
 // p ^ (orderSeed & (bit_floor(p) - 1)), output axis c its axis source[c], then shift + sign * x wrapped into [0,1).

@@ -140,9 +140,63 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
                                             0xf6)); // a | (b ^ c)
 }
 
+// mix64 (hash.h) of 8 64-bit lanes.
+STIPPLE_KERNEL __m512i mix64(__m512i z) {
+    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)), _mm512_set1_epi64(int64_t(0xbf58476d1ce4e5b9ull)));
+    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)), _mm512_set1_epi64(int64_t(0x94d049bb133111ebull)));
+    return _mm512_xor_si512(z, _mm512_srli_epi64(z, 31));
+}
+
+// The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
+// ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
 template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, uint32_t first, uint32_t count,
-                                           float* out) {
+STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
+    __m256i half[2];
+    for (int h = 0; h < 2; ++h) {
+        __m512i wide[Arity];
+        for (uint32_t c = 0; c < Arity; ++c)
+            wide[c] = _mm512_cvtepu32_epi64(h ? _mm512_extracti64x4_epi64(cell[c], 1) : _mm512_castsi512_si256(cell[c]));
+        __m512i id = wide[0];
+        if constexpr (Arity >= 2) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[1], 21));
+        if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
+        const __m512i counter = _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)),
+                                                   _mm512_set1_epi64(int64_t(kGolden64)));
+        half[h] = _mm512_cvtepi64_epi32(mix64(_mm512_xor_si512(counter, _mm512_set1_epi64(int64_t(offsetKey)))));
+    }
+    return _mm512_inserti64x4(_mm512_castsi256_si512(half[0]), half[1], 1);
+}
+
+// jitterInSubCell (blue_noise.h) of 16 lanes: the sub-cell tent((c + o) mod Q), Q = 2^L, with the tent as
+// (2c xor -(c >= Q/2)) mod Q, in the top L bits; the jitter below.
+template <uint32_t Arity>
+STIPPLE_KERNEL __m512i jitterInSubCell(uint32_t lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
+    constexpr uint32_t L = Arity == 1 ? 12 : 6, Q = 1u << L;
+    const __m512i qMask = _mm512_set1_epi32(int(Q - 1));
+    const __m512i o = axis ? _mm512_srli_epi32(offsets, 8 * axis) : offsets; // axis < 3
+    const __m512i c = _mm512_and_si512(_mm512_add_epi32(o, _mm512_set1_epi32(int(lattice))), qMask);
+    const __m512i flip = _mm512_sub_epi32(_mm512_setzero_si512(), _mm512_srli_epi32(c, L - 1));
+    const __m512i t = _mm512_and_si512(_mm512_xor_si512(_mm512_slli_epi32(c, 1), flip), qMask);
+    return _mm512_or_si512(_mm512_slli_epi32(t, 32 - L), _mm512_srli_epi32(jitter, L));
+}
+
+// 2D and 3D with the flag: the full jitter words (axisJitterHead then lowbias32's last step), moved into the
+// pixel's sub-cells of the points' strata, as floats per axis.
+template <uint32_t Arity>
+STIPPLE_KERNEL void blueAxes(const __m512i* top, const __m512i* topMask, const __m128i* cellShift, __m512i t,
+                             const BlueSubCellArgs& blue, const __m128i* jitterShift, __m512* axis) {
+    __m512i cell[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
+    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey);
+    for (uint32_t c = 0; c < Arity; ++c) {
+        const __m512i x = axisJitterHead(t, c);
+        const __m512i jitter = jitterInSubCell<Arity>(blue.lattice[c], offsets, c, _mm512_xor_si512(x, _mm512_srli_epi32(x, 16)));
+        axis[c] = valueOf(top[c], topMask[c], jitter, jitterShift[c]);
+    }
+}
+
+template <uint32_t Arity, bool Blue>
+[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, const BlueSubCellArgs* blue, uint32_t first,
+                                           uint32_t count, float* out) {
     const uint32_t bits = a.pointBits;
     const __m512i mask = _mm512_set1_epi32(int((1u << bits) - 1u));
     const __m128i unused = stipple::detail::count(32 - bits); // >= 32 shifts to 0, as reverseBits(v, 0) is 0
@@ -155,8 +209,9 @@ template <uint32_t Arity>
                           int(0xb0000000u), 0x70000000, int(0xf0000000u)),
         unused);
     __m512i topMask[3];
-    __m128i jitterShift[3], jitterShift16[3];
+    __m128i jitterShift[3], jitterShift16[3], cellShift[3];
     for (uint32_t c = 0; c < Arity; ++c) {
+        cellShift[c] = stipple::detail::count(24 - a.axisBits[c]);
         topMask[c] = _mm512_set1_epi32(int(((1u << a.axisBits[c]) - 1u) << (24 - a.axisBits[c])));
         jitterShift[c] = stipple::detail::count(8 + a.axisBits[c]);
         jitterShift16[c] =
@@ -183,7 +238,14 @@ template <uint32_t Arity>
             const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
             const __m512i top = _mm512_shuffle_epi8(
                 bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
-            storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
+            if constexpr (Blue) {
+                const __m512i cell = _mm512_srl_epi32(_mm512_and_si512(top, topMask[0]), cellShift[0]);
+                const __m512i offsets = stratumOffsets<1>(&cell, blue->offsetKey);
+                const __m512i jitter = jitterInSubCell<1>(blue->lattice[0], offsets, 0, scrambled);
+                storeFirst(o, valueOf(top, topMask[0], jitter, jitterShift[0]), floats);
+            } else {
+                storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
+            }
         } else {
             // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled index
             // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
@@ -194,8 +256,16 @@ template <uint32_t Arity>
             if constexpr (Arity == 2) {
                 __m512i top0, top1;
                 cells2D(q, top0, top1);
-                const __m512 x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
-                const __m512 y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                __m512 x, y;
+                if constexpr (Blue) {
+                    const __m512i top[2] = {top0, top1};
+                    __m512 axis[2];
+                    blueAxes<2>(top, topMask, cellShift, t, *blue, jitterShift, axis);
+                    x = axis[0], y = axis[1];
+                } else {
+                    x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
+                    y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                }
                 const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
                 v[0] = _mm512_permutex2var_ps(x, lo, y);
                 v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
@@ -203,8 +273,13 @@ template <uint32_t Arity>
                 __m512i top[3];
                 cells3D(q, top);
                 __m512 axis[3];
-                for (uint32_t c = 0; c < 3; ++c)
-                    axis[c] = valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
+                if constexpr (Blue) {
+                    blueAxes<3>(top, topMask, cellShift, t, *blue, jitterShift, axis);
+                } else {
+                    for (uint32_t c = 0; c < 3; ++c)
+                        axis[c] =
+                            valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
+                }
                 // Interleave x, y, z.
                 for (uint32_t w = 0; w < 3; ++w) {
                     const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
@@ -221,9 +296,18 @@ template <uint32_t Arity>
 
 void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32_t first, uint32_t count, float* out) {
     switch (arity) {
-    case 1: return progressive<1>(args, first, count, out);
-    case 2: return progressive<2>(args, first, count, out);
-    default: return progressive<3>(args, first, count, out);
+    case 1: return progressive<1, false>(args, nullptr, first, count, out);
+    case 2: return progressive<2, false>(args, nullptr, first, count, out);
+    default: return progressive<3, false>(args, nullptr, first, count, out);
+    }
+}
+
+void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const BlueSubCellArgs& blue, uint32_t arity,
+                           uint32_t first, uint32_t count, float* out) {
+    switch (arity) {
+    case 1: return progressive<1, true>(args, &blue, first, count, out);
+    case 2: return progressive<2, true>(args, &blue, first, count, out);
+    default: return progressive<3, true>(args, &blue, first, count, out);
     }
 }
 
