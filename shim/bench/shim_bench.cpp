@@ -60,7 +60,7 @@ stipple::Sampler makeStreamSampler(uint32_t pattern, uint32_t n) {
     return sampler;
 }
 
-stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
+stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t flags = 0) {
     stipple_dimension_desc dim{};
     dim.struct_size = sizeof dim;
     dim.arity = arity;
@@ -72,6 +72,7 @@ stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
     desc.dimension_count = 1;
     desc.seed = 7;
     desc.dimensions = &dim;
+    desc.flags = flags;
     stipple::Sampler sampler;
     (void)stipple::Sampler::create(sampler, desc);
     return sampler;
@@ -100,6 +101,33 @@ void BM_FillPixel(benchmark::State& state) {
     const char* name = "?";
     stipple_pattern_name(pattern, &name);
     state.SetLabel(name);
+}
+
+// BM_BlueNoiseFill/<pattern>/<arity>/<N>/<blue>: fill_pixel with and without STIPPLE_SAMPLER_FLAG_BLUE_NOISE, the
+// two rows of one (pattern, arity, N) side by side (--benchmark_enable_random_interleaving mixes them further);
+// shim/bench/blue_noise_ratios.py turns one run into blue / plain per value.
+void BM_BlueNoiseFill(benchmark::State& state) {
+    const auto pattern = static_cast<uint32_t>(state.range(0));
+    const auto arity = static_cast<uint32_t>(state.range(1));
+    const auto n = static_cast<uint32_t>(state.range(2));
+    const uint32_t flags = state.range(3) != 0 ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0u;
+    const stipple::Sampler sampler = makeSampler(pattern, arity, n, flags);
+    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
+    stipple_sampler s = sampler.handle();
+    std::vector<float> out(size_t(n) * arity);
+    uint32_t pixel = 0;
+    for (auto _ : state) {
+        // Pixels along rows of the image, so consecutive calls cross 64-pixel tiles as a renderer's do.
+        if (stipple_sampler_fill_pixel(s, pixel % 1024, pixel / 1024, 0, out.data(), out.size()) != STIPPLE_OK) {
+            state.SkipWithError(stipple_last_error_message());
+            break;
+        }
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+        ++pixel;
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+    label(state, pattern);
 }
 
 void BM_Sample(benchmark::State& state) {
@@ -183,6 +211,14 @@ void fillArguments(benchmark::internal::Benchmark* b) {
             for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});
 }
 
+// The patterns that accept the blue-noise flag, plain (0) and flagged (1) next to each other.
+void blueNoiseArguments(benchmark::internal::Benchmark* b) {
+    for (int64_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED})
+        for (int64_t arity = 1; arity <= 3; ++arity)
+            for (int64_t n : {16, 256, 4096})
+                for (int64_t blue : {0, 1}) b->Args({pattern, arity, n, blue});
+}
+
 // Per-value calls: poisson-seed generates its whole set on every call by design, so it is left out here.
 void accessArguments(benchmark::internal::Benchmark* b) {
     for (int64_t pattern = 0; pattern < STIPPLE_PATTERN_COUNT; ++pattern)
@@ -194,6 +230,7 @@ void accessArguments(benchmark::internal::Benchmark* b) {
 } // namespace
 
 BENCHMARK(BM_FillPixel)->ArgNames({"pattern", "arity", "N"})->Apply(fillArguments)->MinTime(0.2);
+BENCHMARK(BM_BlueNoiseFill)->ArgNames({"pattern", "arity", "N", "blue"})->Apply(blueNoiseArguments)->MinTime(0.2);
 BENCHMARK(BM_Sample)->ArgNames({"pattern", "arity", "N"})->Apply(accessArguments)->MinTime(0.2);
 BENCHMARK(BM_Stream)->ArgNames({"pattern", "arity", "N"})->Apply(accessArguments)->MinTime(0.2);
 BENCHMARK(BM_StreamFill)->ArgNames({"pattern", "arity", "N"})->Apply(accessArguments)->MinTime(0.2);
