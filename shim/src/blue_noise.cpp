@@ -65,9 +65,19 @@ LatticePixel::LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, u
         c[0] = uint32_t((h & 8) ? -v : v) & 4095u;
         return;
     }
-    const uint32_t rotation = uint32_t((h >> 8) % arity);
-    for (uint32_t i = 0; i < arity; ++i) {
-        const int32_t* row = arity == 2 ? maps.a2[(i + rotation) % 2] : maps.a3[(i + rotation) % 3];
+    // Divisions by the constants 2 and 3, not by `arity` (a 64-bit division on the path of every blue-noise call).
+    if (arity == 2) {
+        const uint32_t rotation = uint32_t((h >> 8) & 1);
+        for (uint32_t i = 0; i < 2; ++i) {
+            const int32_t* row = maps.a2[i ^ rotation];
+            const int32_t v = row[0] * x + row[1] * y;
+            c[i] = uint32_t((h >> (16 + i)) & 1 ? -v : v) & 63u;
+        }
+        return;
+    }
+    const uint32_t rotation = uint32_t((h >> 8) % 3);
+    for (uint32_t i = 0; i < 3; ++i) {
+        const int32_t* row = maps.a3[i + rotation < 3 ? i + rotation : i + rotation - 3];
         const int32_t v = row[0] * x + row[1] * y;
         c[i] = uint32_t((h >> (16 + i)) & 1 ? -v : v) & 63u;
     }
