@@ -37,17 +37,26 @@ void checkDimension(const stipple::detail::Sampler& sampler, uint32_t dimension)
                         " (the declared layout; past it use stipple_sampler_sample_independent)");
 }
 
-void checkArity(const stipple::detail::Sampler& sampler, uint32_t arity) {
-    const uint32_t maxArity = sampler.patternOps().limits.maxArity;
-    if (arity < 1 || arity > maxArity)
-        throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
-                    "arity is " + std::to_string(arity) + "; expected " + stipple::detail::arityList(maxArity));
+// The checks of the per-value calls inline into them; building the message is out of line (cold).
+[[noreturn, gnu::cold, gnu::noinline]] void throwArity(uint32_t arity, uint32_t maxArity) {
+    throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
+                "arity is " + std::to_string(arity) + "; expected " + stipple::detail::arityList(maxArity));
 }
 
-void checkCapacity(size_t outCount, size_t needed) {
-    if (outCount < needed)
-        throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
-                    "out_count is " + std::to_string(outCount) + "; expected at least " + std::to_string(needed));
+inline void checkArity(const stipple::detail::Sampler& sampler, uint32_t arity) {
+    const uint32_t maxArity = sampler.patternOps().limits.maxArity;
+    if (arity < 1 || arity > maxArity) [[unlikely]]
+        throwArity(arity, maxArity);
+}
+
+[[noreturn, gnu::cold, gnu::noinline]] void throwCapacity(size_t outCount, size_t needed) {
+    throw Error(STIPPLE_ERROR_OUT_OF_RANGE,
+                "out_count is " + std::to_string(outCount) + "; expected at least " + std::to_string(needed));
+}
+
+inline void checkCapacity(size_t outCount, size_t needed) {
+    if (outCount < needed) [[unlikely]]
+        throwCapacity(outCount, needed);
 }
 
 // Output structs: struct_size is set by the caller; we fill what we know and zero the rest of its struct.
