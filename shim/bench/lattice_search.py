@@ -24,6 +24,8 @@ N = 16). 2D maps: det A odd (a bijection of the tile onto the 64 x 64 values). 3
 1D: c = a x + b y mod 4096, a bijection of the tile onto its 4096 values.
 
     /usr/bin/python3 lattice_search.py     # deterministic (seeded); prints the chosen A per arity and its shares
+    /usr/bin/python3 lattice_search.py --strata-aliasing   # the 2D A of strata and of the square: the models
+    /usr/bin/python3 lattice_search.py --square-aliasing   # above and aliasing (battery_gain, below)
 """
 import itertools
 
@@ -125,7 +127,91 @@ def search(arity, q, model, trials, bijective, seed=3, keep=1):
     return found
 
 
-if __name__ == '__main__':
+# Aliasing (2D strata). The Taylor model covers what is smooth inside a stratum; an integrand that oscillates
+# inside one (the battery's zone plate 0.5 + 0.5 cos(60 (x^2 + y^2)) has 2-7 periods across a stratum at N = 16)
+# has its error in modes |k| ~ 5-15 of the tent-folded sub-cells, and a lattice that keeps the lowest modes out of
+# the band takes its 1/16 share of the band from exactly such modes: the former strata A (47, 39; 25, 46) had a
+# predicted zone-plate gain of 0.92 at N = 16 (measured 0.93 [0.90, 0.96]). battery_gain predicts the measured
+# gain from the sub-cell means of each stratum of an n x n grid (per-stratum DFT powers over the tent-folded
+# sub-cells; the spread inside a sub-cell stays white), for the zone plate and the battery's 2D edges and smooth
+# bumps.
+BATTERY = {
+    'zone plate': lambda x, y: 0.5 + 0.5 * np.cos(60 * (x * x + y * y)),
+    'slanted step': lambda x, y: (x < 0.3 + 0.4 * y).astype(float),
+    'pmj disk': lambda x, y: (x * x + y * y < 2 / np.pi).astype(float),
+    'pmj triangle': lambda x, y: (y < x).astype(float),
+    'pmj step': lambda x, y: (x < 1 / 3).astype(float),
+    'gaussian': lambda x, y: np.exp(-x * x - y * y),
+    'off-centre gaussian': lambda x, y: np.exp(-((x - 0.7) ** 2 + (y - 0.35) ** 2) / (2 * 0.15 ** 2)),
+}
+_all_modes = np.array([k for k in itertools.product(range(-31, 33), repeat=2) if any(k)])
+
+
+def stratum_modes(f, n, q=64, sub=4):
+    """DFT powers (summed over the n x n strata) of f's sub-cell means over the tent-folded sub-cells, and the
+    summed variance inside sub-cells."""
+    t = tent(np.arange(q), q)
+    power, spread = np.zeros(len(_all_modes)), 0.0
+    u = (np.arange(q * sub) + 0.5) / (q * sub)
+    for sx in range(n):
+        for sy in range(n):
+            X, Y = np.meshgrid((sx + u) / n, (sy + u) / n, indexing='ij')
+            v = f(X, Y).reshape(q, sub, q, sub)
+            g = v.mean(axis=(1, 3))[t][:, t]
+            power += (np.abs(np.fft.fft2(g) / g.size) ** 2)[tuple((_all_modes % q).T)]
+            spread += v.var(axis=(1, 3)).mean()
+    return power, spread
+
+
+def battery_gain(At, modes, q=64):
+    """Predicted low-band gain (white / flagged) for one integrand's stratum_modes, the worse of the two value-axis
+    rotations blue_noise.cpp picks from."""
+    power, spread = modes
+    gains = []
+    for A in (At, At[::-1]):
+        band = power @ leak(np.mod(_all_modes @ A, q), q)
+        gains.append(WHITE * (power.sum() + spread) / (band + WHITE * spread))
+    return min(gains)
+
+
+ALIASING = {  # use: (its model, strata per axis measured, former A, model gain floor, zone-plate floor, seed)
+    'strata': (lambda: tent_modes(2, 64, 16), (4, 8, 16), [[47, 39], [25, 46]], 500, 1.05, 7),
+    'square': (lambda: square_modes(2, 64, 16), (1,), [[40, 55], [9, 17]], 5, 1.02, 11),
+}
+
+
+def search_aliasing(use, trials=60000, keep=6):
+    """2D candidates whose model gain (Taylor for strata, the worst bump for the square) is >= the floor and whose
+    predicted zone-plate gain is >= its floor at every N (strata: N = 16, 64, 256; square: the unit square), ranked
+    by the least ratio of their predicted battery gains to the former A's (edges and smooth bumps)."""
+    model, grids, former, taylor_min, zone_min, seed = ALIASING[use]
+    rng = np.random.default_rng(seed)
+    ks, w = model()
+    modes = {(name, n): stratum_modes(f, n) for name, f in BATTERY.items() for n in grids}
+    former = np.array(former)
+    reference = {key: battery_gain(former, m) for key, m in modes.items()}
+    ranked = []
+    for _ in range(trials):
+        At = rng.integers(0, 64, size=(2, 2))
+        if round(np.linalg.det(At)) % 2 == 0:
+            continue
+        taylor = WHITE / share(At, 64, ks, w)
+        if taylor < taylor_min or any(battery_gain(At, modes[('zone plate', n)]) < zone_min for n in grids):
+            continue
+        gains = {key: battery_gain(At, m) for key, m in modes.items()}
+        worst = min(gains[key] / reference[key] for key in gains if key[0] != 'zone plate')
+        ranked.append((worst, taylor, At, gains))
+    ranked.sort(key=lambda r: -r[0])
+    return ranked[:keep]
+
+
+if __name__ == '__main__' and len(__import__('sys').argv) > 1 and __import__('sys').argv[1].endswith('-aliasing'):
+    # blue_noise.cpp's 2D A: strata, of these candidates the one with a Taylor-model gain >= 800; square, the first.
+    use = __import__('sys').argv[1][2:].split('-')[0]
+    for worst, taylor, At, gains in search_aliasing(use):
+        print(f'A = {At.tolist()}  model white / share {taylor:.0f}, least battery gain / former {worst:.2f}, zone plate '
+              + ', '.join(f'{n * n} strata: {gains[("zone plate", n)]:.2f}' for n in ALIASING[use][1]))
+elif __name__ == '__main__':
     K = {1: 64, 2: 16, 3: 6}  # modes |k_i| <= K
     for arity, q, trials in ((2, 64, 30000), (3, 64, 10000), (1, 4096, 5000)):
         for name, model, bijective in (('strata', tent_modes(arity, q, K[arity]), arity < 3),

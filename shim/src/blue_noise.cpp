@@ -14,9 +14,14 @@ namespace {
 // Rows: the coefficients of the pixel's x and y per axis, mod Q, from shim/bench/lattice_search.py (a seeded random
 // search): per arity and use, the A whose plane waves, cut by the 64-pixel tiles, leak the least error energy into
 // |f| < 1/8 cycle per pixel (predicted white / low-band ratios in parentheses). Strata: a second-order Taylor
-// polynomial inside a stratum, folded by the tent (2D 1006, 3D 460, 1D 1643). Square (independent: the stratum is
-// the unit square): the worst of Gaussian bumps of width 0.15 at 5 positions per axis, folded by the tent (2D 20,
-// 3D 2, 1D 404). Every 2D and 1D map is a bijection of the tile onto the 64 x 64
+// polynomial inside a stratum, folded by the tent (3D 460, 1D 1643); 2D (811) also counts aliasing: an integrand
+// that oscillates inside a stratum (the zone plate) has its error in modes of moderate order, which the lattice
+// minimising the Taylor share alone (1006) sent into the low band (zone-plate gain 0.93 at N = 16); the kept A
+// comes from lattice_search.py --strata-aliasing (predicted zone-plate gain >= 1.59 at N = 16, 64, 256). Square
+// (independent: the stratum is the unit square): the worst of Gaussian bumps of width 0.15 at 5 positions per axis,
+// folded by the tent (3D 2, 1D 404); 2D (11) picked among the search's candidates for a zone-plate gain above 1
+// (the least-share A, 20, added 4% low-frequency error there). Every 2D and 1D map is a bijection of the tile onto
+// the 64 x 64
 // (4096) values (2D: det A odd; 1D: checked below), so a tile's
 // pixels take every sub-cell of a stratum once.
 struct LatticeMaps {
@@ -25,8 +30,8 @@ struct LatticeMaps {
     int32_t a3[3][2];
 };
 constexpr LatticeMaps kMaps[2] = {
-    {{3136, 2339}, {{47, 39}, {25, 46}}, {{44, 52}, {55, 22}, {36, 24}}}, // LatticeUse::Strata
-    {{1627, 576}, {{40, 55}, {9, 17}}, {{61, 21}, {18, 61}, {51, 35}}},   // LatticeUse::Square
+    {{3136, 2339}, {{23, 50}, {15, 37}}, {{44, 52}, {55, 22}, {36, 24}}}, // LatticeUse::Strata
+    {{1627, 576}, {{44, 33}, {47, 50}}, {{61, 21}, {18, 61}, {51, 35}}},  // LatticeUse::Square
 };
 constexpr bool oddDeterminant(const int32_t (&a)[2][2]) { return (a[0][0] * a[1][1] - a[0][1] * a[1][0]) % 2 != 0; }
 static_assert(oddDeterminant(kMaps[0].a2) && oddDeterminant(kMaps[1].a2));

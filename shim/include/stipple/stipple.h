@@ -99,11 +99,10 @@ typedef int32_t stipple_status;
 /* Screen-space blue noise, for STIPPLE_PATTERN_STRATIFIED and STIPPLE_PATTERN_INDEPENDENT only: the pixels of
  * each 64 x 64 tile stratify every stratum among themselves, so the per-pixel error is spread as blue noise over
  * the image while each pixel's set keeps exactly the plain pattern's distribution. Measured on the 2D integrand
- * battery at N = 16, 64, 256 (shim/POINTSETS.md): low-frequency error 540-1850x (stratified) / 27-440x
- * (independent) lower than without the flag on smooth integrands, 4.2-30x / 5.5-20x on edges (slanted step,
- * quarter disk, occluded quad light), 1.1-1.8x / 1.0x on the Genz discontinuous family; on the zone plate 0.93x
- * (stratified, N = 16; 2-21x at N >= 64) and 0.96x (independent): there the flag adds a few percent. Per-pixel
- * MSE unchanged (0.92-1.07x). The other patterns refuse the flag at creation with STIPPLE_ERROR_INVALID_ARGUMENT
+ * battery at N = 16, 64, 256 (shim/POINTSETS.md): low-frequency error 580-1180x (stratified) / 18-1280x
+ * (independent) lower than without the flag on smooth integrands, 5.0-16x / 4.5-14.5x on edges (slanted step,
+ * quarter disk, occluded quad light), 1.1-1.8x / 1.0x on the Genz discontinuous family, on the zone plate
+ * (aliasing) 1.6-20x / 1.04-1.06x; never higher than without the flag. Per-pixel MSE unchanged (0.92-1.07x). The other patterns refuse the flag at creation with STIPPLE_ERROR_INVALID_ARGUMENT
  * (a per-pixel shift of a tile-shared set added low-frequency error on non-periodic integrands). Works for
  * declared layouts and streams, in every block. Unknown bits are rejected. */
 #define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
