@@ -49,11 +49,12 @@ template <uint32_t Arity>
         for (uint32_t i = 0; i < n; ++i) offsets[i] = hashAt(offsetKey, p0 + i);
         for (uint32_t c = 0; c < Arity; ++c)
             for (uint32_t i = 0; i < n; ++i)
-                bits[c][i] = jitterInSubCell<Arity>(
-                    lattice[c], offsets[i], c, static_cast<uint32_t>(hashAt(key, (p0 + i) * Arity + c) >> 32));
+                bits[c][i] = jitterInSubCell<Arity>(lattice[c], offsets[i], c,
+                                                    static_cast<uint32_t>(hashAt(key, (p0 + i) * Arity + c) >> 32));
         float* o = out + size_t(base) * Arity;
         for (uint32_t i = 0; i < n; ++i)
-            for (uint32_t c = 0; c < Arity; ++c) o[size_t(i) * Arity + c] = static_cast<float>(bits[c][i] >> 8) * 0x1p-24f;
+            for (uint32_t c = 0; c < Arity; ++c)
+                o[size_t(i) * Arity + c] = static_cast<float>(bits[c][i] >> 8) * 0x1p-24f;
     }
 }
 
@@ -144,11 +145,8 @@ constinit const PatternOps kIndependentPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointIndependent(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata =
-        [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-           const CrossPixelStrata& strata) {
-            blueFillForIsa(set.key, dim, first, count, out, strata);
-        },
+    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                     const CrossPixelStrata& strata) { blueFillForIsa(set.key, dim, first, count, out, strata); },
 };
 
 } // namespace stipple::detail

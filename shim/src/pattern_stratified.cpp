@@ -268,9 +268,12 @@ void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, ui
     progressiveAvx512(args, Arity, first, count, out);
 }
 template <uint32_t Arity>
-void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
-                           float* out, const CrossPixelStrata* blue) {
-    const ProgressiveKernelArgs args{set.orderSeed, set.valueSeed, set.jitterSeed, grid.pointBits,
+void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count, float* out,
+                           const CrossPixelStrata* blue) {
+    const ProgressiveKernelArgs args{set.orderSeed,
+                                     set.valueSeed,
+                                     set.jitterSeed,
+                                     grid.pointBits,
                                      {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
     const BlueSubCellArgs subCells{blue->offsetKey(), {blue->lattice.c[0], blue->lattice.c[1], blue->lattice.c[2]}};
     progressiveBlueAvx512(args, subCells, Arity, first, count, out);
@@ -398,11 +401,8 @@ constinit const PatternOps kStratifiedPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointStratified(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata =
-        [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-           const CrossPixelStrata& strata) {
-            blueFillForIsa(set.key, dim, first, count, out, strata);
-        },
+    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                     const CrossPixelStrata& strata) { blueFillForIsa(set.key, dim, first, count, out, strata); },
 };
 
 } // namespace stipple::detail

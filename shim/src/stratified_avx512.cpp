@@ -142,8 +142,10 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
 
 // mix64 (hash.h) of 8 64-bit lanes.
 STIPPLE_KERNEL __m512i mix64(__m512i z) {
-    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)), _mm512_set1_epi64(int64_t(0xbf58476d1ce4e5b9ull)));
-    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)), _mm512_set1_epi64(int64_t(0x94d049bb133111ebull)));
+    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)),
+                           _mm512_set1_epi64(int64_t(0xbf58476d1ce4e5b9ull)));
+    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)),
+                           _mm512_set1_epi64(int64_t(0x94d049bb133111ebull)));
     return _mm512_xor_si512(z, _mm512_srli_epi64(z, 31));
 }
 
@@ -155,12 +157,13 @@ STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
     for (int h = 0; h < 2; ++h) {
         __m512i wide[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
-            wide[c] = _mm512_cvtepu32_epi64(h ? _mm512_extracti64x4_epi64(cell[c], 1) : _mm512_castsi512_si256(cell[c]));
+            wide[c] =
+                _mm512_cvtepu32_epi64(h ? _mm512_extracti64x4_epi64(cell[c], 1) : _mm512_castsi512_si256(cell[c]));
         __m512i id = wide[0];
         if constexpr (Arity >= 2) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[1], 21));
         if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
-        const __m512i counter = _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)),
-                                                   _mm512_set1_epi64(int64_t(kGolden64)));
+        const __m512i counter =
+            _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)), _mm512_set1_epi64(int64_t(kGolden64)));
         half[h] = _mm512_cvtepi64_epi32(mix64(_mm512_xor_si512(counter, _mm512_set1_epi64(int64_t(offsetKey)))));
     }
     return _mm512_inserti64x4(_mm512_castsi256_si512(half[0]), half[1], 1);
@@ -189,7 +192,8 @@ STIPPLE_KERNEL void blueAxes(const __m512i* top, const __m512i* topMask, const _
     const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey);
     for (uint32_t c = 0; c < Arity; ++c) {
         const __m512i x = axisJitterHead(t, c);
-        const __m512i jitter = jitterInSubCell<Arity>(blue.lattice[c], offsets, c, _mm512_xor_si512(x, _mm512_srli_epi32(x, 16)));
+        const __m512i jitter =
+            jitterInSubCell<Arity>(blue.lattice[c], offsets, c, _mm512_xor_si512(x, _mm512_srli_epi32(x, 16)));
         axis[c] = valueOf(top[c], topMask[c], jitter, jitterShift[c]);
     }
 }
