@@ -4,7 +4,8 @@
 // For every variant this CPU runs (baseline, AVX2, AVX-512), forced in turn: fill_pixel equals sample at every
 // index and stream_fill equals stream, for independent, stratified, poisson and sobol, arity 1..3, N from 1 to 2^18
 // (progressive grids with and without the cell table, padded grids), k = 1 and 3, runs that start on and off
-// the kernels' 64-point chunks and 16-float vectors, end mid-vector and cross blocks.
+// the kernels' 64-point chunks and 16-float vectors, end mid-vector and cross blocks. With the blue-noise flag
+// (stratified, independent): every variant's fill_pixel and stream_fill equal the baseline variant's, bitwise.
 #define BOOST_TEST_MODULE batch_isa
 #include <boost/test/unit_test.hpp>
 
@@ -17,7 +18,7 @@
 
 namespace {
 
-stipple_sampler makeSampler(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
+stipple_sampler makeSampler(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k, uint32_t flags = 0) {
     stipple_dimension_desc dim{};
     dim.struct_size = sizeof dim;
     dim.arity = arity;
@@ -29,6 +30,7 @@ stipple_sampler makeSampler(uint32_t pattern, uint32_t n, uint32_t arity, uint32
     desc.dimension_count = 1;
     desc.seed = 0x5eedu + n;
     desc.dimensions = &dim;
+    desc.flags = flags;
     stipple_sampler s = nullptr;
     BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &s) == STIPPLE_OK, stipple_last_error_message());
     return s;
@@ -107,5 +109,44 @@ BOOST_AUTO_TEST_CASE(forcing_is_clamped_to_the_cpu) {
     const stipple::detail::BatchIsa widest = stipple::detail::widestBatchIsa();
     stipple::detail::forceBatchIsa(stipple::detail::BatchIsa::Avx512);
     BOOST_CHECK(stipple::detail::batchIsa() == widest);
+    stipple::detail::forceBatchIsa(widest);
+}
+
+// The blue-noise batch kernels (a chunked loop per ISA, AVX-512 stratified by hand) against the baseline variant's
+// values: pixels in two tiles, runs on and off the chunk grid and across blocks.
+BOOST_AUTO_TEST_CASE(every_isa_variant_gives_the_same_blue_noise_values) {
+    const stipple::detail::BatchIsa widest = stipple::detail::widestBatchIsa();
+    struct Values {
+        std::vector<float> fill, run;
+    };
+    const auto values = [](uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
+        stipple_sampler s = makeSampler(pattern, n, arity, k, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
+        Values v;
+        const size_t perPixel = size_t(n) * k * arity;
+        v.fill.resize(2 * perPixel);
+        BOOST_REQUIRE(stipple_sampler_fill_pixel(s, 5, 9, 0, v.fill.data(), perPixel) == STIPPLE_OK);
+        BOOST_REQUIRE(stipple_sampler_fill_pixel(s, 70, 3, 0, v.fill.data() + perPixel, perPixel) == STIPPLE_OK);
+        const uint32_t first = n > 3 ? n / 3 + 1 : 1, count = 2 * n + 19;
+        v.run.resize(size_t(count) * arity);
+        BOOST_REQUIRE(stipple_sampler_stream_fill(s, 66, 130, first, count, 3, arity, v.run.data(), v.run.size()) ==
+                      STIPPLE_OK);
+        stipple_sampler_release(s);
+        return v;
+    };
+    for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED})
+        for (uint32_t arity = 1; arity <= 3; ++arity)
+            for (uint32_t n : {1u, 2u, 13u, 16u, 64u, 100u, 256u, 4096u, 1u << 16})
+                for (uint32_t k : {1u, 3u}) {
+                    stipple::detail::forceBatchIsa(stipple::detail::BatchIsa::Baseline);
+                    const Values reference = values(pattern, n, arity, k);
+                    for (uint32_t isa = 1; isa <= static_cast<uint32_t>(widest); ++isa) {
+                        stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa));
+                        const Values v = values(pattern, n, arity, k);
+                        BOOST_CHECK_MESSAGE(sameBits(v.fill.data(), reference.fill.data(), v.fill.size()) &&
+                                                sameBits(v.run.data(), reference.run.data(), v.run.size()),
+                                            "pattern " << pattern << " N " << n << " arity " << arity << " k " << k
+                                                       << ": ISA " << isa << " differs from the baseline");
+                    }
+                }
     stipple::detail::forceBatchIsa(widest);
 }
