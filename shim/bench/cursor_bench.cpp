@@ -15,7 +15,8 @@
 //   BM_PerValue/<pattern>/<N>/<arrays>     Sampler::stream / Sampler::array per value (the 1.1 cursor's cost)
 // Ratios from one run, interleaved (shim/bench/cursor_ratios.py):
 //   shim_cursor_bench --benchmark_enable_random_interleaving=true --benchmark_repetitions=9 \
-//       --benchmark_min_time=0.1 --benchmark_format=json > cursor.json && python3 shim/bench/cursor_ratios.py cursor.json
+//       --benchmark_min_time=0.1 --benchmark_format=json > cursor.json && python3 shim/bench/cursor_ratios.py
+//       cursor.json
 // stipple-link: shared
 #include <stipple/stipple.hpp>
 
@@ -31,8 +32,8 @@
 namespace {
 
 const char* const kPatterns[] = {"independent", "stratified", "sobol", "pmj02"};
-constexpr uint32_t kStreams = 8;   // values by call order per sample
-constexpr uint32_t kArrayK = 4;    // the array's k (2D)
+constexpr uint32_t kStreams = 8; // values by call order per sample
+constexpr uint32_t kArrayK = 4;  // the array's k (2D)
 constexpr uint32_t kTileWidth = 64;
 
 struct Setup {
@@ -151,7 +152,7 @@ private:
     const stipple::Sampler& sampler_;
     uint32_t n_, sample_ = 0, dimension_ = 0, array_ = 0;
     stipple::Pixel pixel_ = {-1, -1};
-    std::vector<std::vector<float> > values_ = std::vector<std::vector<float> >(80);
+    std::vector<std::vector<float>> values_ = std::vector<std::vector<float>>(80);
     std::vector<char> filled_ = std::vector<char>(80, 0);
 };
 
@@ -240,13 +241,15 @@ bool sameValues() {
                     hostPixel(cache, pixelOf(pixel), n, arrays, h);
                     hostPixel(calls, pixelOf(pixel), n, arrays, v);
                 }
-                const bool equal = cursor.status().ok() && calls.ok() && c.values.size() == h.values.size() &&
-                                   c.values.size() == v.values.size() &&
-                                   std::memcmp(c.values.data(), h.values.data(), c.values.size() * sizeof(float)) == 0 &&
-                                   std::memcmp(c.values.data(), v.values.data(), c.values.size() * sizeof(float)) == 0;
-                std::fprintf(stderr, "cursor_bench: %-11s N %2u arrays %d: %zu floats, cursor %s hand cache %s per-value calls\n",
-                             kPatterns[pattern], n, int(arrays), c.values.size(), equal ? "==" : "!=",
-                             equal ? "==" : "!=");
+                const bool equal =
+                    cursor.status().ok() && calls.ok() && c.values.size() == h.values.size() &&
+                    c.values.size() == v.values.size() &&
+                    std::memcmp(c.values.data(), h.values.data(), c.values.size() * sizeof(float)) == 0 &&
+                    std::memcmp(c.values.data(), v.values.data(), c.values.size() * sizeof(float)) == 0;
+                std::fprintf(
+                    stderr,
+                    "cursor_bench: %-11s N %2u arrays %d: %zu floats, cursor %s hand cache %s per-value calls\n",
+                    kPatterns[pattern], n, int(arrays), c.values.size(), equal ? "==" : "!=", equal ? "==" : "!=");
                 same = same && equal;
             }
     return same;

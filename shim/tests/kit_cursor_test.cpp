@@ -121,8 +121,8 @@ BOOST_AUTO_TEST_CASE(values_equal_per_value_calls_in_any_order) {
                         std::memcpy(got, v.data(), sizeof v);
                     }
                     BOOST_REQUIRE(s.stream(p, sample, index++, arity, direct).ok());
-                    BOOST_REQUIRE_MESSAGE(sameBits(got, direct, arity), pattern << " step " << step << " stream "
-                                                                                << index - 1 << " arity " << arity);
+                    BOOST_REQUIRE_MESSAGE(sameBits(got, direct, arity),
+                                          pattern << " step " << step << " stream " << index - 1 << " arity " << arity);
                 }
                 ++checked;
             }

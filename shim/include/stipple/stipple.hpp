@@ -424,8 +424,7 @@ public:
     explicit PixelSampleCursor(const Sampler& sampler)
         : sampler_(&sampler), pixel_(Pixel()), sampleIndex_(0), dimension_(0), array_(0),
           batchSamples_(sampler.samplesPerPixel() ? sampler.samplesPerPixel() : 1), windowFirst_(0), windowCount_(0),
-          offset_(0), generation_(0), windowOpen_(false), streamCount_(), arrayCount_(), film_(),
-          failed_(3, 0.0f) {}
+          offset_(0), generation_(0), windowOpen_(false), streamCount_(), arrayCount_(), film_(), failed_(3, 0.0f) {}
 
     // The largest number of samples one fetch covers (default N; it never crosses a block). Takes effect at the
     // next start().
@@ -466,8 +465,7 @@ public:
     }
     // The film position within the pixel: its own 2D stream (kPixelStream); does not advance the counter.
     std::array<float, 2> getPixel2D() {
-        return pair(film_.tag == generation_ ? film_.values + size_t(offset_) * 2
-                                             : value(fetchFilm()));
+        return pair(film_.tag == generation_ ? film_.values + size_t(offset_) * 2 : value(fetchFilm()));
     }
     // The next array: k values (k floats, or k (u, v) pairs as 2k floats), valid until this cursor's next call.
     const float* get1DArray(uint32_t k) { return array(1, k); }
@@ -578,7 +576,8 @@ private:
                               Arity);
             return direct(false, index, Arity, 0, Arity);
         }
-        if (index >= streamCount_[Arity - 1]) grow(streams_[Arity - 1], streamValues_[Arity - 1], streamCount_[Arity - 1], index);
+        if (index >= streamCount_[Arity - 1])
+            grow(streams_[Arity - 1], streamValues_[Arity - 1], streamCount_[Arity - 1], index);
         return refill(streams_[Arity - 1][index], streamValues_[Arity - 1][index], false, index, Arity, 0);
     }
     STIPPLE_HPP_NOINLINE const float* fetchArray(uint32_t index, uint32_t arity, uint32_t k) {
@@ -586,12 +585,13 @@ private:
         // it for its message, with no buffer sized by them; so do indices past the cache.
         if (arity - 1 >= 3 || k - 1 >= STIPPLE_MAX_VALUES_PER_SAMPLE) return direct(true, index, arity, k, 3);
         if (index >= kMaxCachedIndex) return direct(true, index, arity, k, size_t(k) * arity);
-        if (index >= arrayCount_[arity - 1]) grow(arrays_[arity - 1], arrayValues_[arity - 1], arrayCount_[arity - 1], index);
+        if (index >= arrayCount_[arity - 1])
+            grow(arrays_[arity - 1], arrayValues_[arity - 1], arrayCount_[arity - 1], index);
         return refill(arrays_[arity - 1][index], arrayValues_[arity - 1][index], true, index, arity, k);
     }
     STIPPLE_HPP_NOINLINE const float* fetchFilm() { return refill(film_, filmValues_, false, kPixelStream, 2, 0); }
 
-    static void grow(std::vector<Batch>& table, std::vector<std::vector<float> >& values, uint32_t& count,
+    static void grow(std::vector<Batch>& table, std::vector<std::vector<float>>& values, uint32_t& count,
                      uint32_t index) {
         const Batch stale = {0, nullptr};
         table.resize(size_t(index) + 1, stale);
@@ -600,8 +600,8 @@ private:
     }
     // Fills `batch` for the window's samples from the current one on (its storage grows to the window, never
     // shrinks) and returns the current sample's values.
-    STIPPLE_HPP_ALWAYS_INLINE const float* refill(Batch& batch, std::vector<float>& storage, bool isArray, uint32_t index, uint32_t arity,
-                        uint32_t k) {
+    STIPPLE_HPP_ALWAYS_INLINE const float* refill(Batch& batch, std::vector<float>& storage, bool isArray,
+                                                  uint32_t index, uint32_t arity, uint32_t k) {
         if (!windowOpen_) { // no start() yet, or setBatchSamples() since: a window from the current sample
             openWindow(pixel_, sampleIndex_);
             offset_ = 0;
@@ -648,13 +648,13 @@ private:
     Pixel pixel_;
     uint32_t sampleIndex_, dimension_, array_, batchSamples_;
     uint32_t windowFirst_, windowCount_, offset_; // the window's samples; offset_ = sampleIndex_ - windowFirst_
-    uint32_t generation_;                          // of the window; 0 is never current
+    uint32_t generation_;                         // of the window; 0 is never current
     bool windowOpen_;
     Status status_, lastError_;
-    std::vector<Batch> streams_[3], arrays_[3];    // per arity - 1, indexed by stream / array index (hot: 16 bytes)
-    uint32_t streamCount_[3], arrayCount_[3];      // their sizes, for the hot path's bounds check
-    std::vector<std::vector<float> > streamValues_[3], arrayValues_[3]; // their storage, in the same places
-    Batch film_;                                   // getPixel2D's stream
+    std::vector<Batch> streams_[3], arrays_[3]; // per arity - 1, indexed by stream / array index (hot: 16 bytes)
+    uint32_t streamCount_[3], arrayCount_[3];   // their sizes, for the hot path's bounds check
+    std::vector<std::vector<float>> streamValues_[3], arrayValues_[3]; // their storage, in the same places
+    Batch film_;                                                       // getPixel2D's stream
     std::vector<float> filmValues_, spill_, failed_;
 };
 
