@@ -36,15 +36,23 @@ def main(path):
     print(f"{'pattern':<12}{'N':>4}{'arrays':>7}{'cursor':>9}{'hand':>9}{'per-value':>11}"
           f"{'cursor/hand':>13}{'per-value/hand':>16}")
     failed = False
+    ratios = []
     for key in sorted({k[1:] for k in ns}):
         c, h, v = (ns.get((call,) + key) for call in ("Cursor", "HandBatch", "PerValue"))
         if c is None or h is None:
             continue
         ratio = c / h
+        ratios.append(ratio)
         failed |= ratio > BOUND
         print(f"{labels[key[0]]:<12}{key[1]:>4}{'yes' if key[2] else 'no':>7}{c:>9.2f}{h:>9.2f}"
               f"{(v if v else float('nan')):>11.2f}{ratio:>12.2f}x{(v / h if v else float('nan')):>15.2f}x"
               + ("  > 1.1" if ratio > BOUND else ""))
+    if ratios:
+        ratios.sort()
+        middle = len(ratios) // 2
+        median = ratios[middle] if len(ratios) % 2 else (ratios[middle - 1] + ratios[middle]) / 2
+        print(f"cursor/hand over {len(ratios)} rows: median {median:.3f}x, largest {ratios[-1]:.3f}x, "
+              f"{sum(r <= BOUND for r in ratios)} of {len(ratios)} <= {BOUND}")
     return 1 if failed else 0
 
 

@@ -52,7 +52,7 @@ BOOST_AUTO_TEST_CASE(a_kit_sampler_is_the_internal_sampler_of_its_handle) {
         BOOST_TEST(inside.seed() == 42u);
         // The same value through the kit (the C ABI) and through the internal object.
         float viaKit[3], viaInside[3];
-        kit.stream({5, 9}, 21, 3, 3, viaKit);
+        BOOST_TEST(kit.stream({5, 9}, 21, 3, 3, viaKit).ok());
         inside.stream(5, 9, 21, 3, 3, viaInside);
         BOOST_TEST(std::memcmp(viaKit, viaInside, sizeof viaKit) == 0, ops.name);
     }

@@ -55,6 +55,17 @@
 #else
 #define STIPPLE_HPP_MUST_USE
 #endif
+// The cursor's miss path is kept out of its hit path (NOINLINE) and built in one piece (ALWAYS_INLINE).
+#if defined(__GNUC__) || defined(__clang__)
+#define STIPPLE_HPP_NOINLINE __attribute__((noinline))
+#define STIPPLE_HPP_ALWAYS_INLINE __attribute__((always_inline)) inline
+#elif defined(_MSC_VER)
+#define STIPPLE_HPP_NOINLINE __declspec(noinline)
+#define STIPPLE_HPP_ALWAYS_INLINE __forceinline
+#else
+#define STIPPLE_HPP_NOINLINE
+#define STIPPLE_HPP_ALWAYS_INLINE inline
+#endif
 
 namespace stipple {
 
@@ -396,11 +407,13 @@ private:
 // before. For stratification across the samples of a pixel, ask a given index with the same arity (and k) in
 // every sample (another arity is defined: an independent set).
 //
-// Batching: the first time a (stream, arity) or (array, arity, k) is asked in a pixel, the cursor fetches it for
-// the rest of the sample's block (up to batchSamples() samples) with one stream_fill / array_fill call; later
-// samples of that pixel read the cache. Hosts that loop over the samples of a pixel (pbrt, Mitsuba, Cycles'
-// tiles) pay one C call per (pixel, index) instead of per value. A host that visits a pixel once per pass
-// (sample-major: all pixels at sample 0, then sample 1, ...) sets setBatchSamples(1): one call per value, no waste.
+// Batching: start() opens a window of samples when the pixel changes, the sample index steps back or leaves the
+// window: the rest of the sample's block, at most batchSamples() samples. The first time a (stream, arity) or
+// (array, arity, k) is asked in a window, the cursor fetches it for the window's remaining samples with one
+// stream_fill / array_fill call; later samples read the cache. Hosts that loop over the samples of a pixel (pbrt,
+// Mitsuba, Cycles' tiles) pay one C call per (pixel, index) instead of per value, and a cached value costs one
+// tag compare. A host that visits a pixel once per pass (sample-major: all pixels at sample 0, then sample 1, ...)
+// sets setBatchSamples(1): one call per value, no waste.
 class PixelSampleCursor {
 public:
     // getPixel2D's stream: the last stream index (STIPPLE_STREAM_RESERVED_FIRST .. 0xffffffff are the kit's).
@@ -410,18 +423,22 @@ public:
 
     explicit PixelSampleCursor(const Sampler& sampler)
         : sampler_(&sampler), pixel_(Pixel()), sampleIndex_(0), dimension_(0), array_(0),
-          batchSamples_(sampler.samplesPerPixel() ? sampler.samplesPerPixel() : 1), generation_(1), started_(false),
-          failed_(3, 0.0f) {}
+          batchSamples_(sampler.samplesPerPixel() ? sampler.samplesPerPixel() : 1), windowFirst_(0), windowCount_(0),
+          offset_(0), generation_(0), windowOpen_(false), streamCount_(), arrayCount_(), film_(), failed_(3, 0.0f) {}
 
-    // The largest number of samples one fetch covers (default N; it never crosses a block).
-    void setBatchSamples(uint32_t samples) { batchSamples_ = samples < 1 ? 1 : samples; }
+    // The largest number of samples one fetch covers (default N; it never crosses a block). Takes effect at the
+    // next start().
+    void setBatchSamples(uint32_t samples) {
+        batchSamples_ = samples < 1 ? 1 : samples;
+        windowOpen_ = false;
+    }
     uint32_t batchSamples() const { return batchSamples_; }
 
     void start(Pixel pixel, uint32_t sampleIndex, uint32_t dimension = 0) {
-        if (!started_ || pixel != pixel_) ++generation_; // another pixel: every cached batch is stale
-        started_ = true;
-        pixel_ = pixel;
+        if (!windowOpen_ || pixel != pixel_ || sampleIndex < sampleIndex_ || sampleIndex - windowFirst_ >= windowCount_)
+            openWindow(pixel, sampleIndex);
         sampleIndex_ = sampleIndex;
+        offset_ = sampleIndex - windowFirst_;
         dimension_ = dimension;
         array_ = 0;
         if (!status_.ok()) status_ = Status();
@@ -432,57 +449,85 @@ public:
     // The first failure since start() (ok() if none). Without exceptions the get* forms report here.
     const Status& status() const { return status_; }
 
-    float get1D() { return *value(next(dimension_++, 1, 0, false)); }
-    std::array<float, 2> get2D() { return pair(next(dimension_++, 2, 0, false)); }
+    float get1D() {
+        const uint32_t index = dimension_++;
+        return (isCached<1>(index) ? cached<1>(index) : value(fetchStream<1>(index)))[0];
+    }
+    std::array<float, 2> get2D() {
+        const uint32_t index = dimension_++;
+        return pair(isCached<2>(index) ? cached<2>(index) : value(fetchStream<2>(index)));
+    }
     std::array<float, 3> get3D() {
-        const float* v = value(next(dimension_++, 3, 0, false));
+        const uint32_t index = dimension_++;
+        const float* v = isCached<3>(index) ? cached<3>(index) : value(fetchStream<3>(index));
         std::array<float, 3> r = {{v[0], v[1], v[2]}};
         return r;
     }
     // The film position within the pixel: its own 2D stream (kPixelStream); does not advance the counter.
     std::array<float, 2> getPixel2D() {
-        const Batch& b = film_;
-        if (b.generation == generation_ && sampleIndex_ - b.first < b.count)
-            return pair(b.values.data() + size_t(sampleIndex_ - b.first) * 2);
-        return pair(fetch(kPixelStream, 2, 0, false));
+        return pair(film_.tag == generation_ ? film_.values + size_t(offset_) * 2 : value(fetchFilm()));
     }
     // The next array: k values (k floats, or k (u, v) pairs as 2k floats), valid until this cursor's next call.
-    const float* get1DArray(uint32_t k) { return value(next(array_++, 1, k, true)); }
-    const float* get2DArray(uint32_t k) { return value(next(array_++, 2, k, true)); }
+    const float* get1DArray(uint32_t k) { return array(1, k); }
+    const float* get2DArray(uint32_t k) { return array(2, k); }
 
     // The status forms: the same values, the status returned (also recorded in status()). Never throw.
     Status next1D(float& out) STIPPLE_HPP_MUST_USE {
-        const float* v = next(dimension_++, 1, 0, false);
+        const uint32_t index = dimension_++;
+        const float* v = isCached<1>(index) ? cached<1>(index) : fetchStream<1>(index);
         out = v[0];
         return outcome(v);
     }
     Status next2D(std::array<float, 2>& out) STIPPLE_HPP_MUST_USE {
-        const float* v = next(dimension_++, 2, 0, false);
+        const uint32_t index = dimension_++;
+        const float* v = isCached<2>(index) ? cached<2>(index) : fetchStream<2>(index);
         out[0] = v[0];
         out[1] = v[1];
         return outcome(v);
     }
     Status next3D(std::array<float, 3>& out) STIPPLE_HPP_MUST_USE {
-        const float* v = next(dimension_++, 3, 0, false);
+        const uint32_t index = dimension_++;
+        const float* v = isCached<3>(index) ? cached<3>(index) : fetchStream<3>(index);
         for (int c = 0; c < 3; ++c) out[c] = v[c];
         return outcome(v);
     }
     // The next array of arity 1..3: out points at k * arity floats, valid until this cursor's next call.
     Status nextArray(uint32_t arity, uint32_t k, const float*& out) STIPPLE_HPP_MUST_USE {
-        out = next(array_++, arity, k, true);
+        const uint32_t index = array_++;
+        out = isCachedArray(index, arity, k) ? cachedArray(index, arity, k) : fetchArray(index, arity, k);
         return outcome(out);
     }
 
 private:
-    // One cached batch: samples [first, first + count) of one (index, arity[, k]) of the current pixel, `floats`
-    // floats per sample from values.data().
+    // One cached batch: `values` (its storage's data()) holds the window's samples, `floats` per sample, filled from
+    // the sample of the fetch on. tag = the window's generation | k << 32 (k = 0 for streams): a batch is current
+    // exactly when its tag equals the expected one, so a hit costs one compare (arity is the table it sits in).
     struct Batch {
-        uint64_t generation;
-        uint32_t shape; // arity | k << 2
-        uint32_t first, count, floats;
-        std::vector<float> values;
-        Batch() : generation(0), shape(0), first(0), count(0), floats(0) {}
+        uint64_t tag;
+        float* values;
     };
+
+    // The hot path: whether the current window holds (index, arity[, k]), and where its sample is. Checked and
+    // read apart (no null pointer for a miss) so that a hit is a bounds check, one tag compare and an address.
+    template <uint32_t Arity>
+    bool isCached(uint32_t index) const {
+        return index < streamCount_[Arity - 1] && streams_[Arity - 1][index].tag == generation_;
+    }
+    template <uint32_t Arity>
+    const float* cached(uint32_t index) const {
+        return streams_[Arity - 1][index].values + size_t(offset_) * Arity;
+    }
+    bool isCachedArray(uint32_t index, uint32_t arity, uint32_t k) const {
+        return arity - 1 < 3 && index < arrayCount_[arity - 1] && // other arities: fetchArray() reports them
+               arrays_[arity - 1][index].tag == (uint64_t(k) << 32 | generation_);
+    }
+    const float* cachedArray(uint32_t index, uint32_t arity, uint32_t k) const {
+        return arrays_[arity - 1][index].values + size_t(offset_) * k * arity;
+    }
+    const float* array(uint32_t arity, uint32_t k) {
+        const uint32_t index = array_++;
+        return isCachedArray(index, arity, k) ? cachedArray(index, arity, k) : value(fetchArray(index, arity, k));
+    }
 
     // A failed call returns failed_.data() (zeros); nothing else does, so the pointer itself says whether it failed.
     const float* value(const float* v) {
@@ -491,56 +536,102 @@ private:
 #endif
         return v;
     }
-    std::array<float, 2> pair(const float* v) {
-        v = value(v);
+    static std::array<float, 2> pair(const float* v) {
         std::array<float, 2> r = {{v[0], v[1]}};
         return r;
     }
     Status outcome(const float* v) const { return v == failed_.data() ? lastError_ : Status(); }
 
-    // The hot path: a hit in the current pixel's batch of (index, arity[, k]); everything else goes to fetch().
-    const float* next(uint32_t index, uint32_t arity, uint32_t k, bool isArray) {
-        std::vector<Batch>& batches = isArray ? arrays_ : streams_[(arity - 1) % 3];
-        const uint32_t shape = arity | k << 2;
-        if (index < batches.size()) {
-            const Batch& b = batches[index];
-            if (b.generation == generation_ && b.shape == shape && sampleIndex_ - b.first < b.count)
-                return b.values.data() + size_t(sampleIndex_ - b.first) * ((isArray ? k : 1) * arity); // = b.floats
+    // A new window: every batch stale (tags hold the generation; on its wrap-around they are cleared).
+    void openWindow(Pixel pixel, uint32_t sampleIndex) {
+        if (++generation_ == 0) {
+            for (int a = 0; a < 3; ++a) {
+                for (size_t i = 0; i < streams_[a].size(); ++i) streams_[a][i].tag = 0;
+                for (size_t i = 0; i < arrays_[a].size(); ++i) arrays_[a][i].tag = 0;
+            }
+            film_.tag = 0;
+            generation_ = 1;
         }
-        // The call counter never reaches the kit's reserved streams: getPixel2D's would return the film position.
-        if (!isArray && index >= STIPPLE_STREAM_RESERVED_FIRST)
-            return failed(Status(STIPPLE_ERROR_OUT_OF_RANGE,
-                                 "PixelSampleCursor: the call counter reached stream index " + std::to_string(index) +
-                                     ", in the kit's reserved range (getPixel2D's stream and the kit's own)"),
-                          arity);
-        return fetch(index, arity, k, isArray);
+        const uint64_t n = sampler_->samplesPerPixel() ? sampler_->samplesPerPixel() : 1;
+        const uint64_t blockEnd = sampleIndex < n ? n : (uint64_t(sampleIndex) / n + 1) * n; // no division in block 0
+        const uint64_t count = blockEnd - sampleIndex;
+        pixel_ = pixel;
+        windowFirst_ = sampleIndex;
+        windowCount_ = count < batchSamples_ ? uint32_t(count) : batchSamples_;
+        windowOpen_ = true;
     }
 
-    // A miss: fetch the rest of the sample's block (at most batchSamples_ samples) with one batch call.
-    const float* fetch(uint32_t index, uint32_t arity, uint32_t k, bool isArray) {
-        const uint32_t floats = (isArray ? k : 1) * arity;
-        Batch* batch = slot(index, arity, isArray);
-        if (!batch) return direct(index, arity, k, isArray, floats);
-        const uint64_t n = sampler_->samplesPerPixel() ? sampler_->samplesPerPixel() : 1;
-        const uint64_t blockEnd = sampleIndex_ < n ? n : (uint64_t(sampleIndex_) / n + 1) * n; // no division in block 0
-        uint64_t count = blockEnd - sampleIndex_;
-        if (count > batchSamples_) count = batchSamples_;
-        batch->generation = 0;
-        batch->values.resize(size_t(count) * floats);
-        const Status s = isArray ? sampler_->arrayFill(pixel_, sampleIndex_, uint32_t(count), index, arity, k,
-                                                       batch->values.data())
-                                 : sampler_->streamFill(pixel_, sampleIndex_, uint32_t(count), index, arity,
-                                                        batch->values.data());
-        if (!s.ok()) return failed(s, floats);
-        batch->generation = generation_;
-        batch->shape = arity | k << 2;
-        batch->first = sampleIndex_;
-        batch->count = uint32_t(count);
-        batch->floats = floats;
-        return batch->values.data();
+    // A miss (the first use of an index in the window, or no cache for it): one batch call for the window's
+    // remaining samples. Out of line, one function per kind (and arity), so that the hit path stays small enough to
+    // inline into the host's loop and the miss path does no work for shapes it is not serving.
+    template <uint32_t Arity>
+    STIPPLE_HPP_NOINLINE const float* fetchStream(uint32_t index) {
+        if (index >= kMaxCachedIndex) {
+            // The call counter never reaches the kit's reserved streams: getPixel2D's would return the film position.
+            if (index >= STIPPLE_STREAM_RESERVED_FIRST)
+                return failed(Status(STIPPLE_ERROR_OUT_OF_RANGE,
+                                     "PixelSampleCursor: the call counter reached stream index " +
+                                         std::to_string(index) +
+                                         ", in the kit's reserved range (getPixel2D's stream and the kit's own)"),
+                              Arity);
+            return direct(false, index, Arity, 0, Arity);
+        }
+        if (index >= streamCount_[Arity - 1])
+            grow(streams_[Arity - 1], streamValues_[Arity - 1], streamCount_[Arity - 1], index);
+        return refill(streams_[Arity - 1][index], streamValues_[Arity - 1][index], false, index, Arity, 0);
     }
-    // Indices past the cache (and the film stream): one call per value.
-    const float* direct(uint32_t index, uint32_t arity, uint32_t k, bool isArray, size_t floats) {
+    STIPPLE_HPP_NOINLINE const float* fetchArray(uint32_t index, uint32_t arity, uint32_t k) {
+        // Shapes the library refuses (arity outside 1..3, k outside 1..STIPPLE_MAX_VALUES_PER_SAMPLE) go straight to
+        // it for its message, with no buffer sized by them; so do indices past the cache.
+        if (arity - 1 >= 3 || k - 1 >= STIPPLE_MAX_VALUES_PER_SAMPLE) return direct(true, index, arity, k, 3);
+        if (index >= kMaxCachedIndex) return direct(true, index, arity, k, size_t(k) * arity);
+        if (index >= arrayCount_[arity - 1])
+            grow(arrays_[arity - 1], arrayValues_[arity - 1], arrayCount_[arity - 1], index);
+        return refill(arrays_[arity - 1][index], arrayValues_[arity - 1][index], true, index, arity, k);
+    }
+    STIPPLE_HPP_NOINLINE const float* fetchFilm() { return refill(film_, filmValues_, false, kPixelStream, 2, 0); }
+
+    static void grow(std::vector<Batch>& table, std::vector<std::vector<float>>& values, uint32_t& count,
+                     uint32_t index) {
+        const Batch stale = {0, nullptr};
+        table.resize(size_t(index) + 1, stale);
+        values.resize(size_t(index) + 1);
+        count = index + 1;
+    }
+    // Fills `batch` for the window's samples from the current one on (its storage grows to the window, never
+    // shrinks) and returns the current sample's values.
+    STIPPLE_HPP_ALWAYS_INLINE const float* refill(Batch& batch, std::vector<float>& storage, bool isArray,
+                                                  uint32_t index, uint32_t arity, uint32_t k) {
+        if (!windowOpen_) { // no start() yet, or setBatchSamples() since: a window from the current sample
+            openWindow(pixel_, sampleIndex_);
+            offset_ = 0;
+        }
+        const uint32_t floats = (isArray ? k : 1) * arity;
+        const size_t size = size_t(windowCount_) * floats;
+        if (storage.size() < size) storage.resize(size);
+        batch.tag = 0;
+        float* out = storage.data() + size_t(offset_) * floats;
+        const uint32_t count = windowCount_ - offset_;
+        const stipple_sampler handle = sampler_->handle();
+        if (!handle || (isArray && !kit_detail::hasArrays(sampler_->api()))) { // Sampler's calls say why
+            const Status s = isArray ? sampler_->arrayFill(pixel_, sampleIndex_, count, index, arity, k, out)
+                                     : sampler_->streamFill(pixel_, sampleIndex_, count, index, arity, out);
+            if (!s.ok()) return failed(s, floats);
+        } else { // the C call itself: no Status built on success
+            const stipple_api& api = sampler_->api();
+            const stipple_status code =
+                isArray ? api.sampler_array_fill(handle, pixelBits(pixel_.x), pixelBits(pixel_.y), sampleIndex_, count,
+                                                 index, arity, k, out, size_t(count) * floats)
+                        : api.sampler_stream_fill(handle, pixelBits(pixel_.x), pixelBits(pixel_.y), sampleIndex_, count,
+                                                  index, arity, out, size_t(count) * floats);
+            if (code != STIPPLE_OK) return failed(kit_detail::statusOf(api, code), floats);
+        }
+        batch.values = storage.data();
+        batch.tag = (isArray ? uint64_t(k) << 32 : 0) | generation_;
+        return out;
+    }
+    // Indices past the cache and shapes the library refuses: one call per value.
+    const float* direct(bool isArray, uint32_t index, uint32_t arity, uint32_t k, size_t floats) {
         spill_.resize(floats);
         const Status s = isArray ? sampler_->array(pixel_, sampleIndex_, index, arity, k, spill_.data())
                                  : sampler_->stream(pixel_, sampleIndex_, index, arity, spill_.data());
@@ -553,26 +644,18 @@ private:
         failed_.assign(floats < 3 ? 3 : floats, 0.0f);
         return failed_.data();
     }
-    // The batch of (index, arity[, k]); nullptr past the cache.
-    Batch* slot(uint32_t index, uint32_t arity, bool isArray) {
-        if (arity < 1 || arity > 3) return nullptr;
-        std::vector<Batch>& batches = isArray ? arrays_ : streams_[arity - 1];
-        if (index == kPixelStream && !isArray) return &film_;
-        if (index >= kMaxCachedIndex) return nullptr;
-        if (index >= batches.size()) batches.resize(index + 1);
-        return &batches[index];
-    }
-
     const Sampler* sampler_;
     Pixel pixel_;
     uint32_t sampleIndex_, dimension_, array_, batchSamples_;
-    uint64_t generation_;
-    bool started_;
+    uint32_t windowFirst_, windowCount_, offset_; // the window's samples; offset_ = sampleIndex_ - windowFirst_
+    uint32_t generation_;                         // of the window; 0 is never current
+    bool windowOpen_;
     Status status_, lastError_;
-    std::vector<Batch> streams_[3]; // per arity, indexed by stream index
-    std::vector<Batch> arrays_;     // indexed by array index (arity and k checked per use)
-    Batch film_;                    // getPixel2D's stream
-    std::vector<float> spill_, failed_;
+    std::vector<Batch> streams_[3], arrays_[3]; // per arity - 1, indexed by stream / array index (hot: 16 bytes)
+    uint32_t streamCount_[3], arrayCount_[3];   // their sizes, for the hot path's bounds check
+    std::vector<std::vector<float>> streamValues_[3], arrayValues_[3]; // their storage, in the same places
+    Batch film_;                                                       // getPixel2D's stream
+    std::vector<float> filmValues_, spill_, failed_;
 };
 
 } // namespace stipple
