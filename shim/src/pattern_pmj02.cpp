@@ -4,9 +4,12 @@
 //
 // Each (pixel, dimension) set takes one cached pmj02 sequence (pmj02_family.h: S = 2^storedLog2Length points,
 // S >= 8 L for sets of L = 2^m >= M points, up to 2^16) by hash and serves M consecutive points of it per block:
-// 2D points are (x, y) of that sequence; 1D points its x; 3D points its (x, y) and, for z, the x of a second,
-// different sequence of the family (the pmj02 construction is 2D; z is a progressive stratified 1D sequence on
-// its own, so projections with z are stratified in z alone). Randomisation, all hashed from the set key:
+// 2D points are (x, y) of that sequence; 1D points its x; 3D points its (x, y, z), z the sequence's depth
+// coordinate (pmj02_generator.h: tied to (x, y) like the third column of an orthogonal array, so every prefix of
+// 4^q points is stratified on the 2^q x 2^q grids of (x, z) and (y, z) and every prefix of 2^k points, k != 1, in
+// z at 2^-k; the 3D strata themselves are not: the points of one (x, y) cell share z's top digits, so the part
+// of an integrand that is neither additive nor pairwise converges at the independent rate). Randomisation, all
+// hashed from the set key:
 // - an index shuffle that keeps every octave [2^j, 2^(j+1)) in place and Owen-scrambles the order inside it, so
 //   every prefix of 2^j points is exactly the sequence's own prefix (a (0,j,2)-net) while two dimensions that
 //   drew the same sequence still pair their points differently;
@@ -29,8 +32,8 @@ namespace {
 
 struct Pmj02Set {
     const FixedPoint2* xy;
-    const FixedPoint2* z;
-    uint32_t indexSeed, zIndexSeed;
+    const uint32_t* z;
+    uint32_t indexSeed;
     uint32_t scramble[3];
     uint32_t offset; // sequence index of the block's first point
 
@@ -42,13 +45,9 @@ struct Pmj02Set {
         key = hashCombine(key, generation);
         const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
         const uint32_t sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
-        // A different sequence for z: the same one would tie z to x.
-        const uint32_t zSequence =
-            (sequence + 1 + static_cast<uint32_t>(h0 % (family.setCount() - 1))) % family.setCount();
         xy = family.sequence(sequence);
-        z = dim.arity == 3 ? family.sequence(zSequence) : nullptr;
+        z = dim.arity == 3 ? family.depth(sequence) : nullptr;
         indexSeed = static_cast<uint32_t>(h1);
-        zIndexSeed = static_cast<uint32_t>(h1 >> 32);
         scramble[0] = static_cast<uint32_t>(h2);
         scramble[1] = static_cast<uint32_t>(h2 >> 32);
         scramble[2] = static_cast<uint32_t>(hashAt(key, 3));
@@ -68,14 +67,13 @@ inline uint32_t octaveShuffle(uint32_t i, uint32_t seed) {
 }
 
 inline void pmj02Point(const Pmj02Set& set, uint32_t arity, uint32_t r, float* out) {
-    const uint32_t t = set.offset + r;
-    const FixedPoint2& xy = set.xy[octaveShuffle(t, set.indexSeed)];
+    const uint32_t index = octaveShuffle(set.offset + r, set.indexSeed);
+    const FixedPoint2& xy = set.xy[index];
     out[0] = fixedToUnitFloat(reversedScramble(xy.x, set.scramble[0]));
     if (arity == 1) return;
     out[1] = fixedToUnitFloat(reversedScramble(xy.y, set.scramble[1]));
     if (arity == 2) return;
-    const FixedPoint2& z = set.z[octaveShuffle(t, set.zIndexSeed)];
-    out[2] = fixedToUnitFloat(reversedScramble(z.x, set.scramble[2]));
+    out[2] = fixedToUnitFloat(reversedScramble(set.z[index], set.scramble[2]));
 }
 
 // The batch with wide vectors: the same values as pmj02Point, a chunk of points at a time in loops the compiler
@@ -85,7 +83,6 @@ template <uint32_t Arity>
     constexpr uint32_t kChunk = 64;
     alignas(64) uint32_t index[kChunk], a[kChunk], b[kChunk];
     const uint32_t* table = reinterpret_cast<const uint32_t*>(set.xy);
-    const uint32_t* zTable = Arity == 3 ? reinterpret_cast<const uint32_t*>(set.z) : nullptr;
     for (uint32_t base = 0; base < count; base += kChunk) {
         const uint32_t n = count - base < kChunk ? count - base : kChunk;
         const uint32_t t0 = set.offset + first + base;
@@ -99,8 +96,7 @@ template <uint32_t Arity>
             for (uint32_t i = 0; i < n; ++i)
                 o[size_t(i) * Arity + 1] = fixedToUnitFloat(reversedScramble(b[i], set.scramble[1]));
         if constexpr (Arity == 3) {
-            for (uint32_t i = 0; i < n; ++i) index[i] = octaveShuffle(t0 + i, set.zIndexSeed);
-            for (uint32_t i = 0; i < n; ++i) a[i] = zTable[2 * size_t(index[i])];
+            for (uint32_t i = 0; i < n; ++i) a[i] = set.z[index[i]];
             for (uint32_t i = 0; i < n; ++i)
                 o[size_t(i) * Arity + 2] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[2]));
         }

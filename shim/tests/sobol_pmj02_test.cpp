@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <map>
 #include <set>
 
 using namespace stipple::testing;
@@ -92,6 +93,57 @@ BOOST_AUTO_TEST_CASE(one_dimensional_prefixes_are_stratified) {
                 }
         }
     }
+}
+
+// pmj02 in 3D: every prefix of 2^k points of a served set, and of the 4N samples an N-sample sampler serves past
+// its set, is a (0,k,2)-net in (x, y), stratified in z at 2^-k, and for every r with 2r <= k spreads the points
+// of each (x, y) cell of side 2^-r evenly over the cell's cubes of side 2^-r: 2^(k-3r) points per cube when
+// k >= 3r, at most one otherwise (pmj02_generator.h). So the cubes, and the 2^r x 2^r grids of (x, z) and (y, z),
+// hold equal counts. Exact (no alpha): checked on every prefix of 3 pixels and 2 dimensions per N.
+BOOST_AUTO_TEST_CASE(pmj02_3d_prefixes_are_stratified) {
+    // True if the first `count` points fill the cubes of side 2^-r evenly (as above).
+    const auto evenCubes = [](const std::vector<float>& v, uint32_t count, uint32_t r) {
+        std::map<uint32_t, uint32_t> cubes;
+        for (uint32_t i = 0; i < count; ++i) {
+            uint32_t cube = 0;
+            for (uint32_t c = 0; c < 3; ++c) cube = (cube << r) | (toFixed(v[i * 3 + c]) >> (32 - r));
+            ++cubes[cube];
+        }
+        const uint32_t perCube = count >> (3 * r);
+        for (const auto& [cube, n] : cubes)
+            if (n > std::max(perCube, 1u)) return false;
+        return perCube == 0 || cubes.size() == (size_t(1) << (3 * r));
+    };
+    for (uint32_t n : {2u, 4u, 8u, 32u, 64u, 512u, 1024u, 4096u, 8192u})
+        for (uint32_t pixel = 0; pixel < 3; ++pixel) {
+            auto handle = makeSampler(STIPPLE_PATTERN_PMJ02, n, 0x3d + n, {{1, 1}, {3, 1}, {3, 1}});
+            const stipple::detail::Sampler& sampler = *stipple::detail::fromHandle(handle.get());
+            for (uint32_t d = 1; d <= 2; ++d) {
+                std::vector<float> v(size_t(4) * n * 3);
+                for (uint32_t i = 0; i < 4 * n; ++i) sampler.sample(pixel, 11, i, d, v.data() + size_t(i) * 3);
+                const std::vector<float> set = fillPixel(handle.get(), pixel, 11, d);
+                BOOST_REQUIRE(std::memcmp(set.data(), v.data(), set.size() * sizeof(float)) == 0);
+                const std::vector<FixedPoint2> xy = xyOf(v, 3);
+                for (uint32_t k = 0; (1u << k) <= 4 * n; ++k) {
+                    const uint32_t count = 1u << k;
+                    std::set<uint32_t> strata;
+                    for (uint32_t i = 0; i < count; ++i) strata.insert(k == 0 ? 0u : toFixed(v[i * 3 + 2]) >> (32 - k));
+                    BOOST_CHECK_MESSAGE(strata.size() == count,
+                                        "N=" << n << " pixel " << pixel << " dim " << d << ": z, prefix 2^" << k);
+                    BOOST_CHECK_MESSAGE(stipple::detail::isElementaryNet(xy.data(), k),
+                                        "N=" << n << " pixel " << pixel << " dim " << d << ": (x, y), prefix 2^" << k);
+                    for (uint32_t r = 1; 2 * r <= k; ++r)
+                        BOOST_CHECK_MESSAGE(evenCubes(v, count, r), "N=" << n << " pixel " << pixel << " dim " << d
+                                                                         << ": cubes of side 2^-" << r << ", prefix 2^"
+                                                                         << k);
+                }
+            }
+        }
+    // The check fails where it should: z copied from x puts 8 points in 2 of the 8 cubes of side 1/2.
+    std::vector<float> diagonal(8 * 3);
+    for (uint32_t i = 0; i < 8; ++i)
+        diagonal[i * 3] = diagonal[i * 3 + 2] = (float(i) + 0.5f) / 8, diagonal[i * 3 + 1] = float((i * 5) % 8) / 8;
+    BOOST_CHECK(!evenCubes(diagonal, 8, 1));
 }
 
 BOOST_AUTO_TEST_CASE(points_past_the_set_continue_the_sequence) {
