@@ -13,10 +13,10 @@
 // progressive (0,2) prefix.
 //
 // The depth coordinate (generatePmj02Depth) is a digital (0,1)-sequence in the point index, z = C t (kDepthMatrix,
-// over GF(2)), plus random digits below the 16 it sets. It is tied to (x, y) through the doublings: a point stays
-// in the 2^r-grid cell of its index mod 4^r, so the points of a prefix sharing a cell differ only in their high
-// index bits, and C maps those onto distinct cubes. Why not an orthogonal-array z, one point per cell of the
-// 2^q x 2^q grids of (x, z) and (y, z) at every 4^q prefix: nested over every q, such a z is a function of (x, y)
+// over GF(2)), plus random digits below the sequence's resolution. It is tied to (x, y) through the doublings: a
+// point stays in the 2^r-grid cell of its index mod 4^r, so the points of a prefix sharing a cell differ only in
+// their high index bits, and C maps those onto distinct cubes. Why not an orthogonal-array z, one point per cell of
+// the 2^q x 2^q grids of (x, z) and (y, z) at every 4^q prefix: nested over every q, such a z is a function of (x, y)
 // (its top q digits follow from the 2^q-cell), so the points lie on a surface and the 3D error stops falling
 // with N (measured: 93x stratified's MSE on the smooth 3D integrands at N = 4096).
 #include "pmj02_generator.h"
@@ -211,13 +211,16 @@ std::vector<uint32_t> generatePmj02Depth(const std::vector<FixedPoint2>& points,
     const size_t n = points.size();
     if (n > (size_t(1) << std::size(kDepthMatrix)))
         throw Error(STIPPLE_ERROR_INTERNAL, "pmj02 depth: more points than the depth matrix has columns");
+    // Digits below the sequence's resolution are random (C sets none there: t < n has no bit past log2(n)).
+    const uint32_t resolution = static_cast<uint32_t>(std::bit_width(n - 1));
     std::vector<uint32_t> z(n);
     Random random(hashCombine(seed, kDepthStream));
     for (uint32_t t = 0; t < n; ++t) {
         uint32_t digits = 0;
         for (uint32_t bits = t, l = 0; bits != 0; bits >>= 1, ++l)
             if (bits & 1u) digits ^= kDepthMatrix[l];
-        z[t] = digits | (static_cast<uint32_t>(random.next() >> 32) >> std::size(kDepthMatrix));
+        z[t] = digits | (resolution == 0 ? static_cast<uint32_t>(random.next() >> 32)
+                                          : static_cast<uint32_t>(random.next() >> 32) >> resolution);
     }
     return z;
 }
