@@ -146,6 +146,29 @@ BOOST_AUTO_TEST_CASE(pmj02_3d_prefixes_are_stratified) {
     BOOST_CHECK(!evenCubes(diagonal, 8, 1));
 }
 
+// pmj02's batch (fill_pixel, stream_fill: the widest kernel the CPU runs, AVX-512 where it can) gives bitwise the
+// values of the per-point path, for every arity, sets with tails of every length and blocks past N.
+BOOST_AUTO_TEST_CASE(pmj02_batch_equals_the_per_point_path) {
+    for (uint32_t n : {1u, 2u, 5u, 16u, 31u, 97u, 1024u}) {
+        auto s = makeSampler(STIPPLE_PATTERN_PMJ02, n, 0xba7c + n, {});
+        for (uint32_t arity : {1u, 2u, 3u})
+            for (uint32_t first : {0u, 3u * n + 1u}) {
+                const uint32_t count = 2 * n + 3;
+                std::vector<float> batch(size_t(count) * arity), one(arity);
+                BOOST_REQUIRE(stipple_sampler_stream_fill(s.get(), 7, 1, first, count, 5, arity, batch.data(),
+                                                          batch.size()) == STIPPLE_OK);
+                uint32_t mismatches = 0;
+                for (uint32_t i = 0; i < count; ++i) {
+                    BOOST_REQUIRE(stipple_sampler_stream(s.get(), 7, 1, first + i, 5, arity, one.data(), arity) ==
+                                  STIPPLE_OK);
+                    mismatches += std::memcmp(one.data(), batch.data() + size_t(i) * arity, arity * sizeof(float)) != 0;
+                }
+                BOOST_CHECK_MESSAGE(mismatches == 0, "arity " << arity << " N=" << n << " first " << first << ": "
+                                                              << mismatches << " of " << count << " points differ");
+            }
+    }
+}
+
 BOOST_AUTO_TEST_CASE(points_past_the_set_continue_the_sequence) {
     // Through the internal Sampler (the C API of this version serves sample indices < N only).
     for (uint32_t pattern : {STIPPLE_PATTERN_SOBOL, STIPPLE_PATTERN_PMJ02})
