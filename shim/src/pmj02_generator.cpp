@@ -211,16 +211,26 @@ std::vector<uint32_t> generatePmj02Depth(const std::vector<FixedPoint2>& points,
     const size_t n = points.size();
     if (n > (size_t(1) << std::size(kDepthMatrix)))
         throw Error(STIPPLE_ERROR_INTERNAL, "pmj02 depth: more points than the depth matrix has columns");
-    // Digits below the sequence's resolution are random (C sets none there: t < n has no bit past log2(n)).
+    // C t leaves the digits of a prefix of 2^k points past digit k at 0 (C is upper triangular): each point at the
+    // bottom of its stratum. A nested uniform (Owen) scramble of the sequence's digits, one hashed flip per digit
+    // and prefix, makes every point uniform inside its stratum, independently, for every prefix, and keeps every
+    // stratification above (it permutes the z strata of every level inside their parents). The digits below the
+    // sequence's resolution are random.
     const uint32_t resolution = static_cast<uint32_t>(std::bit_width(n - 1));
+    const uint64_t flips = hashCombine(seed, kDepthStream + 1);
     std::vector<uint32_t> z(n);
     Random random(hashCombine(seed, kDepthStream));
     for (uint32_t t = 0; t < n; ++t) {
         uint32_t digits = 0;
         for (uint32_t bits = t, l = 0; bits != 0; bits >>= 1, ++l)
             if (bits & 1u) digits ^= kDepthMatrix[l];
-        z[t] = digits | (resolution == 0 ? static_cast<uint32_t>(random.next() >> 32)
-                                          : static_cast<uint32_t>(random.next() >> 32) >> resolution);
+        uint32_t scrambled = digits;
+        for (uint32_t j = 0; j < resolution; ++j) { // digit j + 1, flipped by a hash of digits 1 .. j
+            const uint32_t prefix = j == 0 ? 0u : digits >> (32 - j);
+            scrambled ^= static_cast<uint32_t>(hashAt(flips, (uint64_t(j) << 32) | prefix) & 1u) << (31 - j);
+        }
+        z[t] = scrambled | (resolution == 0 ? static_cast<uint32_t>(random.next() >> 32)
+                                            : static_cast<uint32_t>(random.next() >> 32) >> resolution);
     }
     return z;
 }
