@@ -32,7 +32,7 @@
  *     the set's sequence for 8 blocks of a power-of-two set (sequences of up to 65536 points: a set of 2^16
  *     points has none past it, a set of 2^14 four blocks), then start a fresh set. 4N samples of an N-sample
  *     sobol or pmj02 sampler have the MSE of a fresh 4N set (0.93-1.08x on the integrand battery, N = 16-1024,
- *     shim/POINTSETS.md; pmj02 in 3D 0.98-1.03x at N = 16-256, 1.13x at N = 1024). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
+ *     shim/POINTSETS.md; pmj02 in 3D 0.96-1.11x, up to 1.19x at N = 1024 in repeated runs). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
  *     spread; sobol and pmj02 are progressive (README: "Any sample count"). The same for fill_pixel (block 0), sample, stream and stream_fill, with or
  *     without STIPPLE_SAMPLER_FLAG_BLUE_NOISE.
  *   - Every value is a pure function of (seed, pixel x, pixel y, sample index, dimension, value index):
