@@ -42,6 +42,8 @@ std::vector<FixedPoint2> xyOf(const std::vector<float>& values, uint32_t arity) 
     return points;
 }
 
+double squaredNorm3(const float* p) { return double(p[0]) * p[0] + double(p[1]) * p[1] + double(p[2]) * p[2]; }
+
 // The largest j with 2^j <= m.
 uint32_t floorLog2(uint32_t m) { return 31 - static_cast<uint32_t>(__builtin_clz(m)); }
 
@@ -144,6 +146,51 @@ BOOST_AUTO_TEST_CASE(pmj02_3d_prefixes_are_stratified) {
     for (uint32_t i = 0; i < 8; ++i)
         diagonal[i * 3] = diagonal[i * 3 + 2] = (float(i) + 0.5f) / 8, diagonal[i * 3 + 1] = float((i * 5) % 8) / 8;
     BOOST_CHECK(!evenCubes(diagonal, 8, 1));
+}
+
+// pmj02 in 3D is not worse than stratified 3D (statistical: 512 pixels per case, fixed seeds; one-sided Welch
+// t-test on the squared errors, family-wise alpha = 0.01, Sidak over the 6 cases) on a smooth non-separable
+// integrand and two edges that cut the cube obliquely, at N = 64 and 512 (one point per cube of side 1/4, 1/8).
+// (On the battery, the former z, drawn independently of (x, y), had 2.9x stratified's MSE on its slanted plane at 512.)
+BOOST_AUTO_TEST_CASE(pmj02_3d_is_not_worse_than_stratified) {
+    struct Integrand {
+        const char* name;
+        double (*f)(const float*);
+        double exact;
+    };
+    const double erf1 = std::erf(1.0) * std::sqrt(std::numbers::pi) / 2;
+    const Integrand integrands[] = {
+        {"exp(-|p|^2)", [](const float* p) { return std::exp(-squaredNorm3(p)); }, erf1 * erf1 * erf1},
+        {"ball r = 0.75", [](const float* p) { return squaredNorm3(p) < 0.5625 ? 1.0 : 0.0; },
+         std::numbers::pi * 0.421875 / 6},
+        {"x + y + z < 1.3", [](const float* p) { return double(p[0]) + p[1] + p[2] < 1.3 ? 1.0 : 0.0; },
+         (1.3 * 1.3 * 1.3 - 3 * 0.3 * 0.3 * 0.3) / 6},
+    };
+    const double alpha = sidak(0.01, 6);
+    for (uint32_t n : {64u, 512u}) {
+        auto pmj = makeSampler(STIPPLE_PATTERN_PMJ02, n, 0x9a3d, {{3, 1}});
+        auto strat = makeSampler(STIPPLE_PATTERN_STRATIFIED, n, 0x9a3d, {{3, 1}});
+        for (const Integrand& in : integrands) {
+            MeanEstimate squared[2];
+            for (int which = 0; which < 2; ++which) {
+                double sum = 0, sumSq = 0;
+                for (uint32_t pixel = 0; pixel < 512; ++pixel) {
+                    const std::vector<float> v = fillPixel((which == 0 ? pmj : strat).get(), pixel, 3, 0);
+                    double estimate = 0;
+                    for (uint32_t i = 0; i < n; ++i) estimate += in.f(v.data() + size_t(i) * 3);
+                    const double e2 = (estimate / n - in.exact) * (estimate / n - in.exact);
+                    sum += e2, sumSq += e2 * e2;
+                }
+                const double mean = sum / 512;
+                squared[which] = {mean, (sumSq / 512 - mean * mean) / 511, 512};
+            }
+            const double p = welchPValue(squared[0], squared[1]) / 2; // one-sided: pmj02's MSE above stratified's
+            BOOST_CHECK_MESSAGE(squared[0].mean <= squared[1].mean || p > alpha,
+                                in.name << " N=" << n << ": pmj02 MSE " << squared[0].mean << " vs stratified "
+                                        << squared[1].mean << ", one-sided p = " << p);
+            BOOST_TEST_MESSAGE(in.name << " N=" << n << ": MSE ratio " << squared[0].mean / squared[1].mean);
+        }
+    }
 }
 
 // pmj02's batch (fill_pixel, stream_fill: the widest kernel the CPU runs, AVX-512 where it can) gives bitwise the
