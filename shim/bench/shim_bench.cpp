@@ -221,8 +221,8 @@ BENCHMARK(BM_PoissonWarmup)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(0.2);
 
-BENCHMARK(BM_Pmj02Sequence)->ArgName("m")->DenseRange(7, 16, 3)->Arg(16)->Unit(benchmark::kMillisecond)->MinTime(0.2);
-BENCHMARK(BM_Pmj02Depth)->ArgName("m")->DenseRange(7, 16, 3)->Arg(16)->Unit(benchmark::kMillisecond)->MinTime(0.2);
+BENCHMARK(BM_Pmj02Sequence)->ArgName("m")->DenseRange(7, 16, 3)->Unit(benchmark::kMillisecond)->MinTime(0.2);
+BENCHMARK(BM_Pmj02Depth)->ArgName("m")->DenseRange(7, 16, 3)->Unit(benchmark::kMillisecond)->MinTime(0.2);
 
 int main(int argc, char** argv) {
     const char* names[] = {"baseline", "avx2", "avx512"};
