@@ -169,61 +169,73 @@ template <uint32_t Arity>
     __m512i scramble[Arity];
     for (uint32_t c = 0; c < Arity; ++c) scramble[c] = _mm512_set1_epi32(int(set.scramble[c]));
     const int* table = reinterpret_cast<const int*>(set.xy);
-    for (uint32_t base = 0; base < count; base += 16) {
-        const uint32_t points = count - base < 16 ? count - base : 16;
-        const __mmask16 live = __mmask16((1u << points) - 1u);
-        const uint32_t blockFirst = set.offset + first + base;
-        __m512i index;
-        if (blockFirst >= 16 && blockFirst % 16 == 0) {
-            // An aligned block lies in one octave (>= 16), and the reversal of blockFirst - octave + lane is that of
-            // blockFirst - octave (a multiple of 16) with the lane's bits on top.
-            const uint32_t octave = std::bit_floor(blockFirst);
-            const __m512i reversed = _mm512_or_si512(_mm512_set1_epi32(int(reverseBits32(blockFirst - octave))),
-                                                     reversedLanes);
-            const __m512i inOctave = reverse32(laineKarras(reversed, _mm512_set1_epi32(int(set.indexSeed ^ octave))));
-            index = _mm512_ternarylogic_epi32(_mm512_set1_epi32(int(octave)), inOctave,
-                                              _mm512_set1_epi32(int(octave - 1)), 0xf8); // a | (b & c)
-        } else {
-            const __m512i t = _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes);
-            // octaveShuffle: octave 0x80000000 >> clz(t) (0 for t < 2), the order inside it scrambled.
-            const __mmask16 small = _mm512_cmplt_epu32_mask(t, two);
-            const __m512i octave = _mm512_maskz_srlv_epi32(__mmask16(~small), _mm512_set1_epi32(int(0x80000000u)),
-                                                           _mm512_lzcnt_epi32(t));
-            const __m512i low = _mm512_maskz_sub_epi32(__mmask16(~small), octave, one);
-            const __m512i inOctave = reverse32(
-                laineKarras(reverse32(_mm512_sub_epi32(t, octave)), _mm512_xor_si512(indexSeed, octave)));
-            index = _mm512_ternarylogic_epi32(_mm512_mask_mov_epi32(octave, small, t), inOctave, low,
-                                              0xf8); // a | (b & c)
-        }
-        const __m512i pair = _mm512_slli_epi32(index, 1);
-        __m512 axis[Arity];
-        axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
-        if constexpr (Arity >= 2)
-            axis[1] =
-                unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4), scramble[1]);
-        if constexpr (Arity == 3)
-            axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
-                                                            reinterpret_cast<const int*>(set.z), 4),
-                                scramble[2]);
-        const uint32_t floats = points * Arity;
-        float* o = out + size_t(base) * Arity;
-        if constexpr (Arity == 1) {
-            storeFirst(o, axis[0], floats);
-        } else {
-            __m512 v[Arity];
-            if constexpr (Arity == 2) {
-                const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
-                v[0] = _mm512_permutex2var_ps(axis[0], lo, axis[1]);
-                v[1] = _mm512_permutex2var_ps(axis[0], _mm512_add_epi32(lo, _mm512_set1_epi32(8)), axis[1]);
+    // Two passes per chunk: the index order first (hashes only, independent across blocks), then the gathers and
+    // value scrambles, so that neither waits on the other's latency chain.
+    constexpr uint32_t kChunkBlocks = 16;
+    alignas(64) uint32_t chunkIndex[kChunkBlocks * 16];
+    for (uint32_t chunk = 0; chunk < count; chunk += kChunkBlocks * 16) {
+        const uint32_t chunkEnd = count - chunk < kChunkBlocks * 16 ? count : chunk + kChunkBlocks * 16;
+        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+            const uint32_t blockFirst = set.offset + first + base;
+            __m512i index;
+            if (blockFirst >= 16 && blockFirst % 16 == 0) {
+                // An aligned block lies in one octave (>= 16), and the reversal of blockFirst - octave + lane is
+                // that of blockFirst - octave (a multiple of 16) with the lane's bits on top.
+                const uint32_t octave = std::bit_floor(blockFirst);
+                const __m512i reversed = _mm512_or_si512(_mm512_set1_epi32(int(reverseBits32(blockFirst - octave))),
+                                                         reversedLanes);
+                const __m512i inOctave =
+                    reverse32(laineKarras(reversed, _mm512_set1_epi32(int(set.indexSeed ^ octave))));
+                index = _mm512_ternarylogic_epi32(_mm512_set1_epi32(int(octave)), inOctave,
+                                                  _mm512_set1_epi32(int(octave - 1)), 0xf8); // a | (b & c)
             } else {
-                for (uint32_t w = 0; w < 3; ++w) {
-                    const __m512 xy =
-                        _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kPmj02Interleave3.xy[w]), axis[1]);
-                    v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kPmj02Interleave3.z[w]), axis[2]);
-                }
+                const __m512i t = _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes);
+                // octaveShuffle: octave 0x80000000 >> clz(t) (0 for t < 2), the order inside it scrambled.
+                const __mmask16 small = _mm512_cmplt_epu32_mask(t, two);
+                const __m512i octave = _mm512_maskz_srlv_epi32(__mmask16(~small), _mm512_set1_epi32(int(0x80000000u)),
+                                                               _mm512_lzcnt_epi32(t));
+                const __m512i low = _mm512_maskz_sub_epi32(__mmask16(~small), octave, one);
+                const __m512i inOctave = reverse32(
+                    laineKarras(reverse32(_mm512_sub_epi32(t, octave)), _mm512_xor_si512(indexSeed, octave)));
+                index = _mm512_ternarylogic_epi32(_mm512_mask_mov_epi32(octave, small, t), inOctave, low,
+                                                  0xf8); // a | (b & c)
             }
-            for (uint32_t w = 0; w < Arity; ++w)
-                if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
+            _mm512_store_si512(chunkIndex + (base - chunk), index);
+        }
+        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+            const uint32_t points = count - base < 16 ? count - base : 16;
+            const __mmask16 live = __mmask16((1u << points) - 1u);
+            const __m512i index = _mm512_load_si512(chunkIndex + (base - chunk));
+            const __m512i pair = _mm512_slli_epi32(index, 1);
+            __m512 axis[Arity];
+            axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
+            if constexpr (Arity >= 2)
+                axis[1] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4),
+                                    scramble[1]);
+            if constexpr (Arity == 3)
+                axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
+                                                                reinterpret_cast<const int*>(set.z), 4),
+                                    scramble[2]);
+            const uint32_t floats = points * Arity;
+            float* o = out + size_t(base) * Arity;
+            if constexpr (Arity == 1) {
+                storeFirst(o, axis[0], floats);
+            } else {
+                __m512 v[Arity];
+                if constexpr (Arity == 2) {
+                    const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
+                    v[0] = _mm512_permutex2var_ps(axis[0], lo, axis[1]);
+                    v[1] = _mm512_permutex2var_ps(axis[0], _mm512_add_epi32(lo, _mm512_set1_epi32(8)), axis[1]);
+                } else {
+                    for (uint32_t w = 0; w < 3; ++w) {
+                        const __m512 xy =
+                            _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kPmj02Interleave3.xy[w]), axis[1]);
+                        v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kPmj02Interleave3.z[w]), axis[2]);
+                    }
+                }
+                for (uint32_t w = 0; w < Arity; ++w)
+                    if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
+            }
         }
     }
 }
