@@ -9,7 +9,9 @@
 // BM_StreamFill: the streaming batch call (stipple_sampler_stream_fill), N samples of one stream per call.
 // shim/bench/ratios.py turns one run's JSON into per-value cost ratios against independent.
 // For poisson the cache of the (arity, N) family is warmed before the timed loop; that warm-up (generating every
-// set of the family) is measured apart by BM_PoissonWarmup/<arity>/<N> on a fresh family.
+// set of the family) is measured apart by BM_PoissonWarmup/<arity>/<N> on a fresh family. pmj02's families are
+// warmed likewise; generating one sequence of 2^m points is BM_Pmj02Sequence/<m> ((x, y)) and BM_Pmj02Depth/<m>
+// (its z for 3D sets, given (x, y)).
 // Links the internal objects only to reach the cache for warming and to pick the batch kernels' ISA
 // (--isa=baseline|avx2|avx512: at most what the CPU runs; default the widest, as the library picks; recorded in the
 // JSON context as batch_isa); samplers are made through stipple.hpp, the timed calls are the C API's.
@@ -17,6 +19,7 @@
 
 #include "batch_isa.h"
 #include "pmj02_family.h"
+#include "pmj02_generator.h"
 #include "poisson_cache.h"
 
 #include <benchmark/benchmark.h>
@@ -205,6 +208,21 @@ void BM_PoissonWarmup(benchmark::State& state) {
     state.SetItemsProcessed(int64_t(state.iterations()) * sets * n);
 }
 
+void BM_Pmj02Sequence(benchmark::State& state) {
+    const auto m = static_cast<uint32_t>(state.range(0));
+    uint64_t seed = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(stipple::detail::generatePmj02(m, seed++));
+    state.SetItemsProcessed(int64_t(state.iterations()) << m);
+}
+
+void BM_Pmj02Depth(benchmark::State& state) {
+    const auto m = static_cast<uint32_t>(state.range(0));
+    const std::vector<stipple::detail::FixedPoint2> points = stipple::detail::generatePmj02(m, 1);
+    uint64_t seed = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(stipple::detail::generatePmj02Depth(points, seed++));
+    state.SetItemsProcessed(int64_t(state.iterations()) << m);
+}
+
 void fillArguments(benchmark::internal::Benchmark* b) {
     for (int64_t pattern = 0; pattern < STIPPLE_PATTERN_COUNT; ++pattern)
         for (int64_t arity = 1; arity <= 3; ++arity)
@@ -239,6 +257,9 @@ BENCHMARK(BM_PoissonWarmup)
     ->ArgsProduct({{1, 2, 3}, {16, 256, 4096}})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(0.2);
+
+BENCHMARK(BM_Pmj02Sequence)->ArgName("m")->DenseRange(7, 16, 3)->Unit(benchmark::kMillisecond)->MinTime(0.2);
+BENCHMARK(BM_Pmj02Depth)->ArgName("m")->DenseRange(7, 16, 3)->Unit(benchmark::kMillisecond)->MinTime(0.2);
 
 int main(int argc, char** argv) {
     const char* names[] = {"baseline", "avx2", "avx512"};

@@ -4,9 +4,11 @@
 //
 // Each (pixel, dimension) set takes one cached pmj02 sequence (pmj02_family.h: S = 2^storedLog2Length points,
 // S >= 8 L for sets of L = 2^m >= M points, up to 2^16) by hash and serves M consecutive points of it per block:
-// 2D points are (x, y) of that sequence; 1D points its x; 3D points its (x, y) and, for z, the x of a second,
-// different sequence of the family (the pmj02 construction is 2D; z is a progressive stratified 1D sequence on
-// its own, so projections with z are stratified in z alone). Randomisation, all hashed from the set key:
+// 2D points are (x, y) of that sequence; 1D points its x; 3D points its (x, y, z), z the sequence's depth
+// coordinate (pmj02_generator.h: a digital (0,1)-sequence in the point index that spreads the points of every
+// (x, y) cell over the cell's cubes, so every prefix of 8^r points is a jittered 3D set and every 2^k prefix is
+// stratified in z; the index shuffle below keeps both, as it keeps prefixes). Randomisation, all
+// hashed from the set key:
 // - an index shuffle that keeps every octave [2^j, 2^(j+1)) in place and Owen-scrambles the order inside it, so
 //   every prefix of 2^j points is exactly the sequence's own prefix (a (0,j,2)-net) while two dimensions that
 //   drew the same sequence still pair their points differently;
@@ -23,14 +25,18 @@
 
 #include <bit>
 
+#if defined(STIPPLE_BATCH_ISA_CLONES)
+#include "avx512_intrinsics.h"
+#endif
+
 namespace stipple::detail {
 
 namespace {
 
 struct Pmj02Set {
     const FixedPoint2* xy;
-    const FixedPoint2* z;
-    uint32_t indexSeed, zIndexSeed;
+    const uint32_t* z;
+    uint32_t indexSeed;
     uint32_t scramble[3];
     uint32_t offset; // sequence index of the block's first point
 
@@ -42,13 +48,9 @@ struct Pmj02Set {
         key = hashCombine(key, generation);
         const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
         const uint32_t sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
-        // A different sequence for z: the same one would tie z to x.
-        const uint32_t zSequence =
-            (sequence + 1 + static_cast<uint32_t>(h0 % (family.setCount() - 1))) % family.setCount();
         xy = family.sequence(sequence);
-        z = dim.arity == 3 ? family.sequence(zSequence) : nullptr;
+        z = dim.arity == 3 ? family.depth(sequence) : nullptr;
         indexSeed = static_cast<uint32_t>(h1);
-        zIndexSeed = static_cast<uint32_t>(h1 >> 32);
         scramble[0] = static_cast<uint32_t>(h2);
         scramble[1] = static_cast<uint32_t>(h2 >> 32);
         scramble[2] = static_cast<uint32_t>(hashAt(key, 3));
@@ -68,14 +70,13 @@ inline uint32_t octaveShuffle(uint32_t i, uint32_t seed) {
 }
 
 inline void pmj02Point(const Pmj02Set& set, uint32_t arity, uint32_t r, float* out) {
-    const uint32_t t = set.offset + r;
-    const FixedPoint2& xy = set.xy[octaveShuffle(t, set.indexSeed)];
+    const uint32_t index = octaveShuffle(set.offset + r, set.indexSeed);
+    const FixedPoint2& xy = set.xy[index];
     out[0] = fixedToUnitFloat(reversedScramble(xy.x, set.scramble[0]));
     if (arity == 1) return;
     out[1] = fixedToUnitFloat(reversedScramble(xy.y, set.scramble[1]));
     if (arity == 2) return;
-    const FixedPoint2& z = set.z[octaveShuffle(t, set.zIndexSeed)];
-    out[2] = fixedToUnitFloat(reversedScramble(z.x, set.scramble[2]));
+    out[2] = fixedToUnitFloat(reversedScramble(set.z[index], set.scramble[2]));
 }
 
 // The batch with wide vectors: the same values as pmj02Point, a chunk of points at a time in loops the compiler
@@ -85,7 +86,6 @@ template <uint32_t Arity>
     constexpr uint32_t kChunk = 64;
     alignas(64) uint32_t index[kChunk], a[kChunk], b[kChunk];
     const uint32_t* table = reinterpret_cast<const uint32_t*>(set.xy);
-    const uint32_t* zTable = Arity == 3 ? reinterpret_cast<const uint32_t*>(set.z) : nullptr;
     for (uint32_t base = 0; base < count; base += kChunk) {
         const uint32_t n = count - base < kChunk ? count - base : kChunk;
         const uint32_t t0 = set.offset + first + base;
@@ -99,8 +99,7 @@ template <uint32_t Arity>
             for (uint32_t i = 0; i < n; ++i)
                 o[size_t(i) * Arity + 1] = fixedToUnitFloat(reversedScramble(b[i], set.scramble[1]));
         if constexpr (Arity == 3) {
-            for (uint32_t i = 0; i < n; ++i) index[i] = octaveShuffle(t0 + i, set.zIndexSeed);
-            for (uint32_t i = 0; i < n; ++i) a[i] = zTable[2 * size_t(index[i])];
+            for (uint32_t i = 0; i < n; ++i) a[i] = set.z[index[i]];
             for (uint32_t i = 0; i < n; ++i)
                 o[size_t(i) * Arity + 2] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[2]));
         }
@@ -112,9 +111,133 @@ template <uint32_t Arity>
 [[STIPPLE_TARGET_AVX2]] void pmj02BatchAvx2(const Pmj02Set& set, uint32_t first, uint32_t count, float* out) {
     pmj02Chunks<Arity>(set, first, count, out);
 }
+
+// The batch with AVX-512 intrinsics, 16 points per step: the same values as pmj02Point (shim.batch_isa compares
+// them bitwise). What the compiler's version of pmj02Chunks spends most on is bit reversal (three per 1D point),
+// one GFNI affine and one byte shuffle here; the octave comes from a lane leading-zero count.
+#define STIPPLE_PMJ02_KERNEL [[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline
+
+STIPPLE_PMJ02_KERNEL __m512i reverse32(__m512i v) {
+    const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(v, _mm512_set1_epi64(0x8040201008040201ll), 0);
+    return _mm512_shuffle_epi8(
+        bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12)));
+}
+
+STIPPLE_PMJ02_KERNEL __m512i xorMul(__m512i x, uint32_t c) {
+    return _mm512_xor_si512(x, _mm512_mullo_epi32(x, _mm512_set1_epi32(int(c))));
+}
+
+// laineKarrasPermutation with a per-lane seed.
+STIPPLE_PMJ02_KERNEL __m512i laineKarras(__m512i x, __m512i seed) {
+    x = _mm512_add_epi32(x, seed);
+    x = xorMul(x, 0x6c50b47cu);
+    x = xorMul(x, 0xb82f1e52u);
+    x = xorMul(x, 0xc7afe638u);
+    return xorMul(x, 0x8d22f6e6u);
+}
+
+// fixedToUnitFloat(reversedScramble(reversed, seed)).
+STIPPLE_PMJ02_KERNEL __m512 unitValue(__m512i reversed, __m512i seed) {
+    const __m512i v = reverse32(laineKarras(reversed, seed));
+    return _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(v, 8)), _mm512_set1_ps(0x1p-24f));
+}
+
+// Lane indices that interleave three 16-lane axes into 48 floats (float f is axis f % 3 of point f / 3).
+struct Pmj02Interleave3 {
+    alignas(64) int32_t xy[3][16];
+    alignas(64) int32_t z[3][16];
+    constexpr Pmj02Interleave3() : xy(), z() {
+        for (int w = 0; w < 3; ++w)
+            for (int l = 0; l < 16; ++l) {
+                const int f = 16 * w + l, point = f / 3, c = f % 3;
+                xy[w][l] = (c == 1 ? 16 : 0) + point;
+                z[w][l] = c == 2 ? 16 + point : l;
+            }
+    }
+};
+inline constexpr Pmj02Interleave3 kPmj02Interleave3{};
+
 template <uint32_t Arity>
 [[STIPPLE_TARGET_AVX512]] void pmj02BatchAvx512(const Pmj02Set& set, uint32_t first, uint32_t count, float* out) {
-    pmj02Chunks<Arity>(set, first, count, out);
+    const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m512i one = _mm512_set1_epi32(1), two = _mm512_set1_epi32(2);
+    const __m512i indexSeed = _mm512_set1_epi32(int(set.indexSeed));
+    const __m512i reversedLanes = _mm512_setr_epi32(
+        0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u), 0x60000000, int(0xe0000000u),
+        0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u), 0x30000000, int(0xb0000000u), 0x70000000,
+        int(0xf0000000u));
+    __m512i scramble[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) scramble[c] = _mm512_set1_epi32(int(set.scramble[c]));
+    const int* table = reinterpret_cast<const int*>(set.xy);
+    // Two passes per chunk: the index order first (hashes only, independent across blocks), then the gathers and
+    // value scrambles, so that neither waits on the other's latency chain.
+    constexpr uint32_t kChunkBlocks = 16;
+    alignas(64) uint32_t chunkIndex[kChunkBlocks * 16];
+    for (uint32_t chunk = 0; chunk < count; chunk += kChunkBlocks * 16) {
+        const uint32_t chunkEnd = count - chunk < kChunkBlocks * 16 ? count : chunk + kChunkBlocks * 16;
+        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+            const uint32_t blockFirst = set.offset + first + base;
+            __m512i index;
+            if (blockFirst >= 16 && blockFirst % 16 == 0) {
+                // An aligned block lies in one octave (>= 16), and the reversal of blockFirst - octave + lane is
+                // that of blockFirst - octave (a multiple of 16) with the lane's bits on top.
+                const uint32_t octave = std::bit_floor(blockFirst);
+                const __m512i reversed = _mm512_or_si512(_mm512_set1_epi32(int(reverseBits32(blockFirst - octave))),
+                                                         reversedLanes);
+                const __m512i inOctave =
+                    reverse32(laineKarras(reversed, _mm512_set1_epi32(int(set.indexSeed ^ octave))));
+                index = _mm512_ternarylogic_epi32(_mm512_set1_epi32(int(octave)), inOctave,
+                                                  _mm512_set1_epi32(int(octave - 1)), 0xf8); // a | (b & c)
+            } else {
+                const __m512i t = _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes);
+                // octaveShuffle: octave 0x80000000 >> clz(t) (0 for t < 2), the order inside it scrambled.
+                const __mmask16 small = _mm512_cmplt_epu32_mask(t, two);
+                const __m512i octave = _mm512_maskz_srlv_epi32(__mmask16(~small), _mm512_set1_epi32(int(0x80000000u)),
+                                                               _mm512_lzcnt_epi32(t));
+                const __m512i low = _mm512_maskz_sub_epi32(__mmask16(~small), octave, one);
+                const __m512i inOctave = reverse32(
+                    laineKarras(reverse32(_mm512_sub_epi32(t, octave)), _mm512_xor_si512(indexSeed, octave)));
+                index = _mm512_ternarylogic_epi32(_mm512_mask_mov_epi32(octave, small, t), inOctave, low,
+                                                  0xf8); // a | (b & c)
+            }
+            _mm512_store_si512(chunkIndex + (base - chunk), index);
+        }
+        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+            const uint32_t points = count - base < 16 ? count - base : 16;
+            const __mmask16 live = __mmask16((1u << points) - 1u);
+            const __m512i index = _mm512_load_si512(chunkIndex + (base - chunk));
+            const __m512i pair = _mm512_slli_epi32(index, 1);
+            __m512 axis[Arity];
+            axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
+            if constexpr (Arity >= 2)
+                axis[1] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4),
+                                    scramble[1]);
+            if constexpr (Arity == 3)
+                axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
+                                                                reinterpret_cast<const int*>(set.z), 4),
+                                    scramble[2]);
+            const uint32_t floats = points * Arity;
+            float* o = out + size_t(base) * Arity;
+            if constexpr (Arity == 1) {
+                storeFirst(o, axis[0], floats);
+            } else {
+                __m512 v[Arity];
+                if constexpr (Arity == 2) {
+                    const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
+                    v[0] = _mm512_permutex2var_ps(axis[0], lo, axis[1]);
+                    v[1] = _mm512_permutex2var_ps(axis[0], _mm512_add_epi32(lo, _mm512_set1_epi32(8)), axis[1]);
+                } else {
+                    for (uint32_t w = 0; w < 3; ++w) {
+                        const __m512 xy =
+                            _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kPmj02Interleave3.xy[w]), axis[1]);
+                        v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kPmj02Interleave3.z[w]), axis[2]);
+                    }
+                }
+                for (uint32_t w = 0; w < Arity; ++w)
+                    if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
+            }
+        }
+    }
 }
 #endif
 

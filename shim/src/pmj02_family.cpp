@@ -29,9 +29,11 @@ const FixedPoint2* Pmj02Family::sequence(uint32_t j) const {
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_acquire)) return data;
     std::lock_guard<std::mutex> lock(slot.mutex);
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_relaxed)) return data;
-    slot.points =
-        generatePmj02(storedLog2Length_, hashCombine(hashCombine(mix64(kPmj02FamilyDomain), storedLog2Length_), j));
+    const uint64_t seed = hashCombine(hashCombine(mix64(kPmj02FamilyDomain), storedLog2Length_), j);
+    slot.points = generatePmj02(storedLog2Length_, seed);
+    slot.depth = generatePmj02Depth(slot.points, seed);
     for (FixedPoint2& p : slot.points) p = {reverseBits32(p.x), reverseBits32(p.y)}; // the order the scramble takes
+    for (uint32_t& z : slot.depth) z = reverseBits32(z);
     slot.ready.store(slot.points.data(), std::memory_order_release);
     return slot.points.data();
 }
