@@ -56,8 +56,9 @@ void checkServedRho(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixel
     const double rhoStored = stipple::detail::pointsets::relativeRadius(int(arity), stored.data(), n);
     const double rhoServed = stipple::detail::pointsets::relativeRadius(int(arity), served.data(), n);
     if (cellLattice) {
-        // The stored lattice (no rotation) attains its worst case; a rotation can only keep or widen distances.
-        BOOST_CHECK_MESSAGE(rhoServed >= rhoStored - rhoTolerance(rhoStored, arity, n) && rhoServed >= 0.80,
+        // The stored lattice (no rotation) attains its worst case up to the face margin (cell_lattice.cpp: offsets
+        // mapped into [m, 1 - m], moving rho by at most 0.003); a rotation keeps or widens the lattice's distances.
+        BOOST_CHECK_MESSAGE(rhoServed >= rhoStored - 0.003 - rhoTolerance(rhoStored, arity, n) && rhoServed >= 0.80,
                             "poisson cell lattice arity " << arity << " N=" << n << ": served rho " << rhoServed
                                                           << ", stored rho " << rhoStored);
         return;
@@ -144,11 +145,11 @@ BOOST_AUTO_TEST_CASE(two_dimensional_cell_lattices_keep_rho) {
     for (uint32_t n : {256u, 512u, 1024u, 3000u}) {
         auto s = makeSampler(STIPPLE_PATTERN_POISSON, n, 77, {{2, 1}});
         double least = 1.0;
-        for (uint32_t pixel = 0; pixel < 24; ++pixel) {
-            const std::vector<float> served = fillPixel(s.get(), pixel, 3, 0);
+        for (uint32_t pixel = 0; pixel < 96; ++pixel) { // 96 pixels: each of the 32 sets drawn with probability 0.95
+            const std::vector<float> served = fillPixel(s.get(), pixel % 12, pixel / 12, 0);
             least = std::min(least, stipple::detail::pointsets::relativeRadius(2, served.data(), n));
         }
-        BOOST_TEST_MESSAGE("2D poisson N=" << n << ": least served rho over 24 pixels " << least);
+        BOOST_TEST_MESSAGE("2D poisson N=" << n << ": least served rho over 96 pixels " << least);
         BOOST_CHECK_GE(least, 0.80);
     }
 }
@@ -176,7 +177,7 @@ BOOST_AUTO_TEST_CASE(two_dimensional_cell_lattice_samples_are_uniform) {
 
 // 2D poisson holds on smooth non-periodic integrands where the toroidal shift lost: the ramp x + y and
 // exp(-x^2 - y^2) at N = 1024 over 256 pixels (fixed seed). Measured MSE ratios to stratified (shim_battery, 400
-// pixels): ramp 0.001, exp(-x^2-y^2) 0.015 (the toroidal sets: 3.2x and 4.0x). The check asks for < 0.5: with 256
+// pixels): ramp 0.006, exp(-x^2-y^2) 0.019 (the toroidal sets: 3.2x and 4.0x). The check asks for < 0.5: with 256
 // pixels the relative standard error of each MSE estimate is about sqrt(2/256) = 0.09 for Gaussian errors, so a true
 // ratio of 1 passes with probability ~1e-8 (log 0.5 is 5.5 standard errors of the log ratio).
 BOOST_AUTO_TEST_CASE(two_dimensional_poisson_beats_stratified_on_non_periodic_integrands) {

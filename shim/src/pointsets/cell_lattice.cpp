@@ -182,7 +182,11 @@ uint32_t sharedOffsets(const Grid& grid, const Matrix& a, uint32_t enough) {
 }
 
 // The set's points for a first-digit/second-digit matrix, in cell order: cell c's offset along axis j is
-// frac(A_j c) + frac(B_j c) / L, in exact integers, plus half a step of 1/L^2 so that no point sits on a cell face.
+// frac(A_j c) + frac(B_j c) / L, in exact integers, plus half a step of 1/L^2, then mapped into [m, 1 - m] with
+// m = kFaceMargin. The serving decides in float which points its rotation carried across a cell face; a stored
+// offset closer to a face than float resolves (1/L^2 is 3e-6 of a cell for a 75 x 40 grid) could be put in the
+// wrong cell. The map moves differences by at most 2m of a cell: rho by at most 0.003 below the search's floor.
+constexpr double kFaceMargin = 0x1p-10;
 std::vector<float> latticePoints(const Grid& grid, const Matrix& a, uint32_t n) {
     const int dim = grid.dim;
     const uint64_t lcm = gridLcm(grid);
@@ -198,7 +202,7 @@ std::vector<float> latticePoints(const Grid& grid, const Matrix& a, uint32_t n) 
                 second += uint64_t(a.w[j][k]) * c[k] % grid.g[k] * (lcm / grid.g[k]);
             }
             const double offset = (double(first % lcm) + (double(second % lcm) + 0.5) / double(lcm)) / double(lcm);
-            points[size_t(i) * dim + j] = clampBelowOne((c[j] + offset) / grid.g[j]);
+            points[size_t(i) * dim + j] = clampBelowOne((c[j] + kFaceMargin + (1.0 - 2.0 * kFaceMargin) * offset) / grid.g[j]);
         }
     }
     return points;
