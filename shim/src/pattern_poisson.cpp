@@ -2,8 +2,8 @@
 // Copyright 2026 The stipple authors
 // pattern_poisson.cpp — serving Poisson-disk sets: "poisson" from the cache, "poisson-seed" generated fresh.
 //
-// A stored "poisson" set is a cell set (one point per cell of a grid aligned with the domain: 1D cellSet1D, 2D and 3D
-// pointsets::generateCellLattice) or, where no cell grid reaches the lattice's rho floor, a toroidal set. A cell set
+// A stored "poisson" set is a cell set (one point per cell of a grid aligned with the domain: 1D cellSet1D, 2D
+// pointsets::generateCellLattice) or a toroidal set (3D, and 2D where no cell grid qualifies; poisson_cache.cpp). A cell set
 // is served shifted by a whole number of cells per axis and its offsets rotated inside their cells by a common
 // amount per axis (TorusMap::alignToCells), after reflections (and, on a grid with equal sides, an axis
 // permutation): the domain's faces stay cell faces, so a non-periodic integrand sees no seam, and the cell shift
@@ -74,7 +74,7 @@ struct TorusMap : PoissonKernelArgs {
     // [0,1); and the rotation keeps the set's structure, since the offsets' steps from cell to cell are only changed
     // by whole turns (cellSet1D's steps are all -beta modulo 1). As a torus shift by (k + tau) / n followed by
     // rotateInsideCells: a shifted point whose offset is now below tau crossed into the next cell and goes back.
-    // 2D and 3D cell sets (pointsets::generateCellLattice) are served the same way on every axis c, with cells[c]
+    // 2D cell sets (pointsets::generateCellLattice) are served the same way on every axis c, with cells[c]
     // cells: offsets frac(A c) move to frac(A c + tau), which the lattice's rho floor holds for. A reflection before
     // (sign -1) maps cells onto cells as well. Axis c = 0 draws from the hash 1D always used (1D values unchanged).
     void alignToCells(uint64_t key, const uint32_t* cells, uint32_t arity) {

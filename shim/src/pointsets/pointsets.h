@@ -29,8 +29,9 @@ uint32_t cellSubdivision1D(uint32_t n);
 // 2D and 3D sets aligned with the domain (cell_lattice.cpp): a grid of cells(0) x cells(1) [x cells(2)] = n cells,
 // one point per cell at the offset frac(A c) for an integer-over-grid matrix A chosen so that the set keeps
 // rho >= cellLatticeRhoFloor(dim) under every common within-cell shift (how pattern_poisson.cpp serves it). Points
-// in cell order (cell index x-fastest). Empty points if no grid with sides at most 2.5:1 reaches the floor
-// (then the toroidal generatePoisson set is served). Deterministic in seed.
+// in cell order (cell index x-fastest). Empty points if no grid with sides at most 2.5:1 and 16 cells a side
+// qualifies, or n > 2^16 (the search's cost grows with n); then the toroidal generatePoisson set is served.
+// Deterministic in seed.
 struct CellLattice {
     std::vector<float> points;
     uint32_t cells[3] = {0, 0, 0};
