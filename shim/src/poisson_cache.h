@@ -3,7 +3,8 @@
 // poisson_cache.h — amortised Poisson-disk sets: a bounded, thread-safe cache of toroidal sets per (arity, M).
 //
 // A family holds setCount sets of M points for one arity. Set j is generated lazily, on first use, by
-// pointsets::generatePoisson with a seed derived from (arity, M, j) only: the content of the cache is a pure
+// pointsets::generateCellLattice (2D, 3D; pointsets::generatePoisson where no cell grid reaches its rho floor, and
+// in 1D) with a seed derived from (arity, M, j) only: the content of the cache is a pure
 // function of its key, so results never depend on which thread generated a set first.
 //
 // Bound: the families held by the cache total at most kByteBudget (64 MiB) of point storage, counted at full
@@ -38,6 +39,8 @@ public:
         if (const float* data = slots_[j].ready.load(std::memory_order_acquire)) return data;
         return generate(j);
     }
+    // Set j's cells per axis (all 0: a toroidal set, served with a torus shift); valid once set(j) returned.
+    const uint32_t* cells(uint32_t j) const { return slots_[j].cells; }
     bool generated(uint32_t j) const { return slots_[j].ready.load(std::memory_order_acquire) != nullptr; }
 
     // The seed set j is generated from: a function of (arity, M, j) only.
@@ -49,6 +52,7 @@ private:
         std::mutex mutex;
         std::atomic<const float*> ready{nullptr};
         std::vector<float> points;
+        uint32_t cells[3] = {0, 0, 0};
     };
     uint32_t arity_, points_, setCount_;
     std::unique_ptr<Slot[]> slots_;

@@ -26,6 +26,21 @@ std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
 // layout.
 uint32_t cellSubdivision1D(uint32_t n);
 
+// 2D and 3D sets aligned with the domain (cell_lattice.cpp): a grid of cells(0) x cells(1) [x cells(2)] = n cells,
+// one point per cell at the offset frac(A c) for an integer-over-grid matrix A chosen so that the set keeps
+// rho >= cellLatticeRhoFloor(dim) under every common within-cell shift (how pattern_poisson.cpp serves it). Points
+// in cell order (cell index x-fastest). Empty points if no grid with sides at most 2.5:1 and 16 cells a side
+// qualifies, or n > 2^16 (the search's cost grows with n); then the toroidal generatePoisson set is served.
+// Deterministic in seed.
+struct CellLattice {
+    std::vector<float> points;
+    uint32_t cells[3] = {0, 0, 0};
+    double rho = 0.0;    // the worst case over within-cell shifts (before the face margin: at most 0.003 less)
+    uint32_t shared = 0; // cells that share each offset value along the worst axis (1: all n different)
+};
+CellLattice generateCellLattice(int dim, uint32_t n, uint64_t seed);
+double cellLatticeRhoFloor(int dim);
+
 // The study's Algorithm 1: dart throwing with r0 = N^(-1/dim), r <- 0.75 r after TRY_LIMIT = 100
 // consecutive failures, neighbour search in an ordered set (1D), quadtree (2D) or octree (3D).
 // Points in the order they were accepted.
