@@ -38,13 +38,17 @@ std::vector<int> unitsOf(const std::string& pattern, int x, int y, int w, int h,
 } // namespace
 
 ErrorEstimate patternError(const std::vector<ResultRow>& rows, const MatrixScene& scene, const std::string& pattern,
-                           uint32_t spp, int region, bool flip, double floor) {
+                           uint32_t spp, int region, bool flip, double floor, bool relative) {
     std::vector<std::vector<double>> perSeed;
     PixelRect rect;
     for (const auto& r : rows) {
         if (r.scene != scene.name || r.pattern != pattern || r.spp != spp) continue;
-        const std::vector<double>& all = region < 0 ? (flip ? r.blockFlip : r.blockSse)
-                                                    : (flip ? r.regionBlockFlip : r.regionBlockSse);
+        const std::vector<double>& all = region < 0 ? (flip       ? r.blockFlip
+                                                       : relative ? r.blockRse
+                                                                  : r.blockSse)
+                                                    : (flip       ? r.regionBlockFlip
+                                                       : relative ? r.regionBlockRse
+                                                                  : r.regionBlockSse);
         rect = region < 0 ? PixelRect{0, 0, r.width, r.height} : PixelRect{};
         size_t offset = 0;
         if (region >= 0) {
@@ -61,6 +65,18 @@ ErrorEstimate patternError(const std::vector<ResultRow>& rows, const MatrixScene
     if (perSeed.empty()) return {};
     return estimateFromBlocks(perSeed, unitsOf(pattern, rect.x, rect.y, rect.w, rect.h, region < 0),
                               double(rect.w) * rect.h, flip ? 0.0 : floor);
+}
+
+double errorFloor(const std::vector<ResultRow>& rows, const std::string& scene, int region, bool flip, bool relative) {
+    if (flip) return 0.0;
+    if (!relative) return floorFromRows(rows, scene, region);
+    double floor = 0;
+    for (const auto& r : rows)
+        if (r.scene == scene)
+            floor = std::max(floor, region < 0                                 ? r.rseFloor
+                                    : size_t(region) < r.regionRseFloor.size() ? r.regionRseFloor[size_t(region)]
+                                                                               : 0.0);
+    return floor;
 }
 
 LogShift cpuTimeShift(const std::vector<ResultRow>& rows, const std::string& scene, const std::string& a,
@@ -82,10 +98,10 @@ LogShift cpuTimeShift(const std::vector<ResultRow>& rows, const std::string& sce
 
 Comparison comparePatterns(const std::vector<ResultRow>& rows, const MatrixScene& scene, const std::string& a,
                            const std::string& b, uint32_t spp, int region, bool flip, bool equalTime,
-                           const Margin& margin) {
-    const double floor = flip ? 0.0 : floorFromRows(rows, scene.name, region);
-    const ErrorEstimate ea = patternError(rows, scene, a, spp, region, flip, floor);
-    const ErrorEstimate eb = patternError(rows, scene, b, spp, region, flip, floor);
+                           const Margin& margin, bool relative) {
+    const double floor = errorFloor(rows, scene.name, region, flip, relative);
+    const ErrorEstimate ea = patternError(rows, scene, a, spp, region, flip, floor, relative);
+    const ErrorEstimate eb = patternError(rows, scene, b, spp, region, flip, floor, relative);
     return compareErrors(ea, eb, margin, equalTime ? cpuTimeShift(rows, scene.name, a, b, spp) : LogShift{});
 }
 
@@ -124,8 +140,12 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
     o.claim = fmt("compare %s%s @ %u spp: %s, %s %s, expect %s (margin %.2f-%.2f; 90%% inside: EQUIVALENT, 95%% "
                   "excludes 1: BETTER/WORSE)%s",
                   k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp, pairs.c_str(),
-                  k.flipMetric ? "mean FLIP" : "MSE", k.equalTime ? "× CPU s (equal time)" : "per sample",
-                  expectationName(k.expect), margin.lo, margin.hi, k.study.empty() ? "" : ("; study: " + k.study).c_str());
+                  k.flipMetric ? "mean FLIP"
+                               : fmt("relative squared error Σ_rgb e² / (reference + image mean)², capped at 3·%g²",
+                                     kRelativeErrorCap)
+                                     .c_str(),
+                  k.equalTime ? "× CPU s (equal time)" : "per sample", expectationName(k.expect), margin.lo, margin.hi,
+                  k.study.empty() ? "" : ("; study: " + k.study).c_str());
     bool any = false;
     for (const auto& s : m.scenes) {
         if (k.scene != "all" && k.scene != s.name) continue;
@@ -146,14 +166,20 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                     v.flip = k.flipMetric;
                     v.comparison = comparePatterns(rows, s, v.a, v.b, k.spp, ri, k.flipMetric, k.equalTime, margin);
                     v.status = statusFor(k.expect, v.comparison);
+                    // The plain MSE ratio beside: what the weights and the cap changed.
+                    const Comparison plain =
+                        k.flipMetric ? Comparison{}
+                                     : comparePatterns(rows, s, v.a, v.b, k.spp, ri, false, k.equalTime, margin, false);
                     if (v.status == CheckStatus::Fail || (v.status == CheckStatus::NotSeparated && o.status == CheckStatus::Pass))
                         o.status = v.status;
-                    o.figures.push_back(fmt("%s %s: %s/%s %s %s (dof %.0f)%s", s.name.c_str(),
-                                            v.region.empty() ? "whole image" : v.region.c_str(), v.a.c_str(),
-                                            v.b.c_str(), ratioText(v.comparison).c_str(),
-                                            verdictName(v.comparison.verdict), v.comparison.dof,
-                                            v.status == CheckStatus::Pass ? ""
-                                                                          : fmt("   <-- %s", checkStatusName(v.status)).c_str()));
+                    o.figures.push_back(fmt(
+                        "%s %s: %s/%s %s %s (dof %.0f)%s%s", s.name.c_str(),
+                        v.region.empty() ? "whole image" : v.region.c_str(), v.a.c_str(), v.b.c_str(),
+                        ratioText(v.comparison).c_str(), verdictName(v.comparison.verdict), v.comparison.dof,
+                        k.flipMetric
+                            ? ""
+                            : fmt("; plain MSE %s %s", ratioText(plain).c_str(), verdictName(plain.verdict)).c_str(),
+                        v.status == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v.status)).c_str()));
                     o.verdicts.push_back(v);
                 }
         }

@@ -140,6 +140,67 @@ std::vector<double> blockSquaredErrors(const Image& reference, const Image& imag
     return blocks;
 }
 
+std::vector<float> relativeErrorWeights(const Image& reference) {
+    checkShape(reference, "reference");
+    const size_t pixels = size_t(reference.width) * size_t(reference.height);
+    std::vector<float> level(pixels, -1.0f);
+    double sum = 0;
+    size_t finite = 0;
+    for (int j = 0; j < reference.height; ++j)
+        for (int i = 0; i < reference.width; ++i) {
+            const float* r = reference.pixel(i, j);
+            if (!finitePixel(r)) continue;
+            const double v = std::abs((double(r[0]) + double(r[1]) + double(r[2])) / 3.0);
+            level[size_t(j) * size_t(reference.width) + size_t(i)] = float(v);
+            sum += v;
+            ++finite;
+        }
+    const double m = finite ? sum / double(finite) : 0.0;
+    std::vector<float> weights(pixels, 0.0f);
+    for (size_t p = 0; p < pixels; ++p)
+        if (level[p] >= 0 && double(level[p]) + m > 0)
+            weights[p] = float(1.0 / ((double(level[p]) + m) * (double(level[p]) + m)));
+    return weights;
+}
+
+double relativeNoiseFloor(const Image& varianceOfMean, const std::vector<float>& weights, int x, int y, int w, int h) {
+    checkShape(varianceOfMean, "variance");
+    if (weights.size() != size_t(varianceOfMean.width) * size_t(varianceOfMean.height))
+        throw std::invalid_argument("relative noise floor: the weights do not match the variance image's size");
+    double sum = 0;
+    uint64_t n = 0;
+    for (int j = y; j < y + h; ++j)
+        for (int i = x; i < x + w; ++i) {
+            const float* v = varianceOfMean.pixel(i, j);
+            if (!finitePixel(v)) continue;
+            sum += double(weights[size_t(j) * size_t(varianceOfMean.width) + size_t(i)]) *
+                   (double(v[0]) + double(v[1]) + double(v[2]));
+            ++n;
+        }
+    return n ? sum / double(n) : 0.0;
+}
+
+std::vector<double> blockRelativeSquaredErrors(const Image& reference, const Image& image,
+                                               const std::vector<float>& weights, int x, int y, int w, int h) {
+    checkShape(reference, "reference");
+    checkShape(image, "compared");
+    if (weights.size() != size_t(reference.width) * size_t(reference.height))
+        throw std::invalid_argument("relative squared errors: the weights do not match the reference's size");
+    const double cap = 3.0 * kRelativeErrorCap * kRelativeErrorCap;
+    std::vector<double> blocks(size_t(blockCount(w, h)), 0.0);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const float* r = reference.pixel(x + i, y + j);
+            const float* p = image.pixel(x + i, y + j);
+            if (!finitePixel(r) || !finitePixel(p)) continue;
+            double sum = 0;
+            for (int c = 0; c < 3; ++c) sum += (double(r[c]) - double(p[c])) * (double(r[c]) - double(p[c]));
+            const double weight = weights[size_t(y + j) * size_t(reference.width) + size_t(x + i)];
+            blocks[size_t(j / kErrorBlockSize) * blockColumns(w) + i / kErrorBlockSize] += std::min(weight * sum, cap);
+        }
+    return blocks;
+}
+
 std::vector<double> blockSums(const std::vector<float>& map, int mapWidth, int x, int y, int w, int h) {
     std::vector<double> blocks(size_t(blockCount(w, h)), 0.0);
     for (int j = 0; j < h; ++j)

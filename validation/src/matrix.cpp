@@ -413,14 +413,25 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 if (m.spp.size() < 2) P.fail(c, "a slope check needs at least two spp in the matrix");
             } else if (type == "time_ratio") {
                 k.type = CheckType::TimeRatio;
-                P.onlyKeys(c, {"type", "scene", "numerator", "denominator", "max", "spp", "not_separated"},
+                P.onlyKeys(c, {"type", "scene", "numerator", "denominator", "max", "margin", "spp", "not_separated"},
                            "a time_ratio check");
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 k.numerator = matrixPattern(P.required(c, "numerator", "a time_ratio check"));
                 k.denominator = matrixPattern(P.required(c, "denominator", "a time_ratio check"));
                 if (k.denominator == k.numerator)
                     P.fail(c["denominator"], "numerator and denominator are the same pattern '" + k.numerator + "'");
-                k.maxRatio = P.positive(P.required(c, "max", "a time_ratio check"), "max");
+                // A bound (≤ max) or an equivalence (within [lo, hi], two one-sided tests), not both.
+                if (const yaml::Node margin = c["margin"]) {
+                    if (c["max"]) P.fail(margin, "a time_ratio check takes max or margin, not both");
+                    if (!margin.IsSequence() || margin.size() != 2) P.fail(margin, "margin must be [lo, hi]");
+                    k.marginLo = P.positive(margin[0], "margin lo");
+                    k.marginHi = P.positive(margin[1], "margin hi");
+                    if (!(k.marginLo < 1 && k.marginHi > 1))
+                        P.fail(margin, "margin must hold 1 strictly inside: [lo < 1, hi > 1]");
+                    k.timeEquivalence = true;
+                } else {
+                    k.maxRatio = P.positive(P.required(c, "max", "a time_ratio check"), "max");
+                }
                 k.spp = c["spp"] ? matrixSpp(c["spp"], "spp") : m.spp.back();
                 // An interval straddling the bound says the run could not tell, not that the claim is false.
                 k.notSeparatedFails = notSeparated(c, false);

@@ -77,6 +77,7 @@ struct Check {
     // time_ratio
     std::string numerator, denominator;
     double maxRatio = 0;
+    bool timeEquivalence = false; // margin given: within [marginLo, marginHi] (TOST) instead of ≤ maxRatio
     uint32_t spp = 0; // 0: the largest spp of the matrix
     // time_ceiling
     double seconds = 0;

@@ -36,6 +36,10 @@ struct ResultRow {
     // Per block of kErrorBlockSize pixels (image_metrics.h), row-major: Σ squared error and Σ FLIP, of the whole image
     // and of each region (its own blocks from its top left, the regions' lists one after the other).
     std::vector<double> blockSse, blockFlip, regionBlockSse, regionBlockFlip;
+    // As blockSse / regionBlockSse, of the capped relative squared error (blockRelativeSquaredErrors, image_metrics.h).
+    std::vector<double> blockRse, regionBlockRse;
+    double rseFloor = 0;                // the reference's noise in the same units (relativeNoiseFloor), per pixel
+    std::vector<double> regionRseFloor; // per region
 };
 
 struct SceneInfo {

@@ -165,6 +165,9 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
     const FlipMaps flip = ldrFlipLinear(ref.image, image);
     row.flip = flip.mean();
     row.blockSse = blockSquaredErrors(ref.image, image, 0, 0, image.width, image.height);
+    const std::vector<float> weights = relativeErrorWeights(ref.image);
+    row.blockRse = blockRelativeSquaredErrors(ref.image, image, weights, 0, 0, image.width, image.height);
+    row.rseFloor = relativeNoiseFloor(ref.variance, weights, 0, 0, image.width, image.height);
     row.blockFlip = blockSums(flip.flip, flip.width, 0, 0, image.width, image.height);
     row.spectrumRatio = errorSpectrum(ref.image, image).highOverLow;
     for (size_t ri = 0; ri < ms.regions.size(); ++ri) {
@@ -180,6 +183,9 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
         row.regionMse.push_back(mse);
         row.regionMseCorrected.push_back(correctedMse(mse, regionFloors[ri]));
         for (double v : blockSquaredErrors(ref.image, image, px.x, px.y, px.w, px.h)) row.regionBlockSse.push_back(v);
+        for (double v : blockRelativeSquaredErrors(ref.image, image, weights, px.x, px.y, px.w, px.h))
+            row.regionBlockRse.push_back(v);
+        row.regionRseFloor.push_back(relativeNoiseFloor(ref.variance, weights, px.x, px.y, px.w, px.h));
         for (double v : blockSums(flip.flip, flip.width, px.x, px.y, px.w, px.h)) row.regionBlockFlip.push_back(v);
     }
 }

@@ -43,6 +43,7 @@ ordered_json checkJson(const Check& c) {
         j["numerator"] = c.numerator;
         j["denominator"] = c.denominator;
         j["max"] = c.maxRatio;
+        if (c.timeEquivalence) j["margin"] = {c.marginLo, c.marginHi};
         j["spp"] = c.spp;
         break;
     case CheckType::TimeCeiling: j["seconds"] = c.seconds; break;

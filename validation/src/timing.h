@@ -5,7 +5,8 @@
 // other processes take the cores). The two patterns of a claim render back to back within each (spp, seed)
 // group, so each seed gives one paired ratio; the claim is judged on the geometric mean of the paired ratios
 // with a 95% Student-t interval on the log scale: PASS when the whole interval is ≤ the bound, FAIL when it is
-// all above, NOT SEPARATED when it straddles the bound.
+// all above, NOT SEPARATED when it straddles the bound. Stated as an equivalence (a margin [lo, hi]), the claim
+// "costs the same within the margin" can be decided both ways: the 90% interval inside the margin passes.
 #pragma once
 
 #include <string>
@@ -21,6 +22,7 @@ enum class TimeBasis { Cpu, Wall };
 struct PairedRatio {
     double ratio = 0;      // geometric mean of the per-seed ratios numerator / denominator
     double lo = 0, hi = 0; // its 95% interval (exp of the t interval of the mean log ratio)
+    double lo90 = 0, hi90 = 0; // its 90% interval (equivalence: two one-sided tests at 5%)
     size_t pairs = 0;
 };
 
@@ -31,6 +33,9 @@ PairedRatio pairedTimeRatio(const std::vector<ResultRow>& rows, const std::strin
 
 // PASS: hi ≤ bound; FAIL: lo > bound; NOT SEPARATED otherwise (or when the interval is undefined).
 CheckStatus ratioVerdict(const PairedRatio& r, double bound);
+// Equivalence within [lo, hi] (Schuirmann's two one-sided tests): PASS when the 90% interval lies inside the
+// margin; FAIL when the 95% interval lies wholly outside it; NOT SEPARATED otherwise.
+CheckStatus equivalenceVerdict(const PairedRatio& r, double lo, double hi);
 
 // The time_ratio check: verdict on CPU seconds, with the wall-clock ratio and its interval beside it.
 void evaluateTimeRatio(const Check& check, const Matrix& matrix, const std::vector<ResultRow>& rows,

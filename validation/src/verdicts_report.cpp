@@ -119,8 +119,8 @@ struct StudyColumn {
     bool equalTime, flip;
     const char* title;
 };
-constexpr StudyColumn kStudyColumns[] = {{false, false, "per sample: MSE ratio"},
-                                         {true, false, "equal CPU time: MSE·s ratio"},
+constexpr StudyColumn kStudyColumns[] = {{false, false, "per sample: error ratio"},
+                                         {true, false, "equal CPU time: error·s ratio"},
                                          {false, true, "perceptual: mean FLIP ratio"}};
 
 // The study-tagged verdict of a column for (scene, region, {p, q}), and whether it is oriented q / p.
@@ -187,7 +187,11 @@ std::string studyTableHtml(const ReportInputs& in) {
                   << patternHeader(q) << "</td>" << cells << "</tr>\n";
             }
         }
-    o << "</table></div>\n<p class=\"note\">Ratio of A's error to B's (below 1: A better), 95% interval; "
+    o << "</table></div>\n<p class=\"note\">Ratio of A's error to B's (below 1: A better), 95% interval; error: "
+         "the relative squared error Σ<sub>rgb</sub> (I<sub>ref</sub> − I)² / (reference + image mean)², capped at "
+      << fmt("%g", 3 * kRelativeErrorCap * kRelativeErrorCap)
+      << " per pixel (a few bright pixels cannot decide it; the checks' figures give the plain-MSE ratio beside), "
+         "or mean FLIP; "
          "<strong>EQUIVALENT</strong>: the 90% interval lies inside the margin (two one-sided tests at 5%), "
          "<strong>BETTER</strong> / <strong>WORSE</strong>: the 95% interval excludes 1, else <strong>NOT "
          "SEPARATED</strong>. <em>holds / refuted / undecided</em>: the study's statement of the column against that "
@@ -200,7 +204,7 @@ std::string studyTableHtml(const ReportInputs& in) {
 std::string bestPatternText(const ReportInputs& in, const MatrixScene& s, bool equalTime) {
     const auto& rows = in.results->rows;
     const uint32_t spp = in.matrix->spp.back();
-    const double floor = floorFromRows(rows, s.name);
+    const double floor = errorFloor(rows, s.name, -1, false, true);
     std::vector<std::pair<double, std::string>> ranked;
     for (const auto& p : in.matrix->patterns) {
         const ErrorEstimate e = patternError(rows, s, p, spp, -1, false, floor);
@@ -251,8 +255,9 @@ std::string verdictHeadlineHtml(const ReportInputs& in) {
          "<a href=\"figure3/summary.md\" data-made-after=\"1\">its tables</a>.</p></div>\n";
     o << studyTableHtml(in);
     o << "<h2 id=\"best\">Best pattern per scene at " << m.spp.back()
-      << " spp (whole image)</h2>\n<div class=\"wide\"><table><tr><th>scene</th><th>per sample (least MSE)</th><th>at "
-         "equal CPU time (least MSE·s)</th></tr>\n";
+      << " spp (whole image)</h2>\n<div class=\"wide\"><table><tr><th>scene</th><th>per sample (least "
+         "error)</th><th>at "
+         "equal CPU time (least error·s)</th></tr>\n";
     for (const auto& s : m.scenes)
         o << "<tr><td><a href=\"#scene-" << safeName(s.name) << "\">" << html(s.name) << "</a></td><td>"
           << bestPatternText(in, s, false) << "</td><td>" << bestPatternText(in, s, true) << "</td></tr>\n";

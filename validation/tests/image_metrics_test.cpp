@@ -4,9 +4,11 @@
 #define BOOST_TEST_MODULE validation_image_metrics
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "image_metrics.h"
 
@@ -51,6 +53,32 @@ BOOST_AUTO_TEST_CASE(non_finite_pixels_are_counted_and_excluded) {
     BOOST_CHECK_EQUAL(e.nonFinitePixels, 2u);
     BOOST_CHECK_EQUAL(e.pixels, 14u);
     BOOST_CHECK_CLOSE(e.mse, 1.0, 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(relative_squared_error_weighs_by_brightness_and_caps_outliers) {
+    // Reference: a 16 × 8 image at 1, its right half a light at 9: image mean m = 5, weights 1/(1+5)² and 1/(9+5)².
+    Image ref = filled(16, 8, 1, 1, 1);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 8; x < 16; ++x) std::fill(ref.pixel(x, y), ref.pixel(x, y) + 3, 9.0f);
+    const std::vector<float> w = relativeErrorWeights(ref);
+    BOOST_CHECK_CLOSE(w[0], 1.0 / 36, 1e-5);
+    BOOST_CHECK_CLOSE(w[15], 1.0 / 196, 1e-5);
+    // An error of 1.4 in red on a dark pixel and on a light pixel: 1.96/36 and 1.96/196, in blocks 0 and 1.
+    Image im = ref;
+    im.pixel(0, 0)[0] += 1.4f;
+    im.pixel(8, 0)[0] += 1.4f;
+    std::vector<double> b = blockRelativeSquaredErrors(ref, im, w, 0, 0, 16, 8);
+    BOOST_REQUIRE_EQUAL(b.size(), 2u);
+    BOOST_CHECK_CLOSE(b[0], 1.96 / 36, 1e-3);
+    BOOST_CHECK_CLOSE(b[1], 1.96 / 196, 1e-3);
+    // A firefly of 1000 on a dark pixel counts 3 · 4² = 48, not 10⁶ / 36.
+    im.pixel(3, 3)[1] += 1000.0f;
+    b = blockRelativeSquaredErrors(ref, im, w, 0, 0, 16, 8);
+    BOOST_CHECK_CLOSE(b[0], 1.96 / 36 + 3 * kRelativeErrorCap * kRelativeErrorCap, 1e-3);
+    // The reference's own noise in the same units: a variance of 0.01 per channel everywhere.
+    const Image variance = filled(16, 8, 0.01f, 0.01f, 0.01f);
+    BOOST_CHECK_CLOSE(relativeNoiseFloor(variance, w, 0, 0, 16, 8), 0.03 * (1.0 / 36 + 1.0 / 196) / 2, 1e-3);
+    BOOST_CHECK_THROW(blockRelativeSquaredErrors(ref, im, std::vector<float>(3), 0, 0, 16, 8), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(size_mismatch_is_a_clear_error) {

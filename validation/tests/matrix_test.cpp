@@ -125,6 +125,8 @@ BOOST_AUTO_TEST_CASE(bad_values_are_errors) {
     expectError(f, replaced(good, "name: veach }", "name: veach, reference_spp: 32 }"),
                 {f.path() + ":6:5", "reference_spp (32) must be ≥ 4× the largest cell spp (16)"});
     expectError(f, replaced(good, "max: 1.05", "max: 0"), {":14:87", "max must be > 0"});
+    expectError(f, replaced(good, "max: 1.05", "max: 1.05, margin: [0.9, 1.1]"), {":14:", "max or margin, not both"});
+    expectError(f, replaced(good, "max: 1.05", "margin: [1.1, 1.2]"), {":14:", "margin must hold 1 strictly inside"});
     expectError(f, "- a\n- b\n", {f.path() + ":1:1", "must be a YAML map"});
 }
 

@@ -60,6 +60,24 @@ BOOST_AUTO_TEST_CASE(verdicts) {
                 CheckStatus::NotSeparated);
 }
 
+BOOST_AUTO_TEST_CASE(equivalence_verdicts) {
+    // Within [0.9, 1.1]: consistent ratios around 1.02 are EQUIVALENT (90% interval inside); around 1.3, FAIL (95%
+    // interval above 1.1); ratios spread from 0.95 to 1.15, NOT SEPARATED (the interval reaches past 1.1).
+    auto same = pairs({1.02, 1.03, 1.01, 1.02}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1});
+    const PairedRatio s = pairedTimeRatio(same, "s", "a", "b", 64, TimeBasis::Cpu);
+    BOOST_CHECK(s.lo < s.lo90 && s.hi90 < s.hi);
+    BOOST_CHECK(equivalenceVerdict(s, 0.9, 1.1) == CheckStatus::Pass);
+    auto slower = pairs({1.3, 1.32, 1.28, 1.3}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1});
+    BOOST_CHECK(equivalenceVerdict(pairedTimeRatio(slower, "s", "a", "b", 64, TimeBasis::Cpu), 0.9, 1.1) ==
+                CheckStatus::Fail);
+    auto spread = pairs({0.95, 1.15, 1.0, 1.1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1});
+    BOOST_CHECK(equivalenceVerdict(pairedTimeRatio(spread, "s", "a", "b", 64, TimeBasis::Cpu), 0.9, 1.1) ==
+                CheckStatus::NotSeparated);
+    auto one = pairs({1}, {1}, {1}, {1});
+    BOOST_CHECK(equivalenceVerdict(pairedTimeRatio(one, "s", "a", "b", 64, TimeBasis::Cpu), 0.9, 1.1) ==
+                CheckStatus::NotSeparated);
+}
+
 BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {
     // A busy machine: wall seconds of pattern a inflated by 40-80% on the seeds where a hog ran beside it; the CPU
     // seconds are unchanged. The claim a / b ≤ 1.05 passes on CPU seconds; the wall ratio is shown beside.
