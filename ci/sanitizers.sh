@@ -3,8 +3,9 @@
 # Copyright 2026 The stipple authors
 # Sanitizer CI: build the asan preset (ASan + UBSan, RelWithDebInfo) and run the whole CTest suite but
 # labels `slow` and `slurm` (the Slurm test checks job orchestration, which the release run covers); build the
-# tsan preset and run label `parallel` (tests that exercise several threads). Each stage builds only the targets
-# its tests run (ci/test-targets.sh), not the whole tree.
+# tsan preset (-O1: about a fifth less compile time than -O2) and run label `parallel` (tests that exercise several
+# threads), STIPPLE_JOBS at a time (the one timing test among them, validation.timing_under_load, is RUN_SERIAL).
+# Each stage builds only the targets its tests run (ci/test-targets.sh), not the whole tree.
 # Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
 #
 # Environment (all optional):
@@ -56,7 +57,7 @@ if [[ " $which " == *" tsan "* ]]; then
     exclude=${STIPPLE_TSAN_EXCLUDE:-}
     configure_and_build tsan "$dir" -L parallel ${exclude:+-E "$exclude"}
     export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
-    ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j 1 --output-on-failure --timeout 900 || status=1
+    ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j "$jobs" --output-on-failure --timeout 900 || status=1
     unset TSAN_OPTIONS
     echo "sanitizers.sh: tsan done after $((SECONDS - start)) s"
 fi
