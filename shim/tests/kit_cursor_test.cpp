@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // kit_cursor_test.cpp — stipple.hpp's PixelSampleCursor as a cache of the library's values: every value equals the
 // per-value C call under any order of starts (back steps, repeats, blocks past N, batch sizes changed mid-pixel,
 // one index asked with several arities or k); a pixel-major host pays one batch call per (pixel, index) and no

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // cell_lattice.cpp — "poisson" in 2D (the generator works in 3D too): Poisson-disk sets aligned with the domain,
 // one point per cell.
 //
