@@ -81,14 +81,8 @@ stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n, uint3
     return sampler;
 }
 
-void BM_FillPixel(benchmark::State& state) {
-    const auto pattern = static_cast<uint32_t>(state.range(0));
-    const auto arity = static_cast<uint32_t>(state.range(1));
-    const auto n = static_cast<uint32_t>(state.range(2));
-    const stipple::Sampler sampler = makeSampler(pattern, arity, n);
-    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
-    stipple_sampler s = sampler.handle();
-    warmPoisson(pattern, arity, n);
+// fill_pixel over pixels along rows of the image, so consecutive calls cross 64-pixel tiles as a renderer's do.
+void timeFillPixel(benchmark::State& state, stipple_sampler s, uint32_t arity, uint32_t n) {
     std::vector<float> out(size_t(n) * arity);
     uint32_t pixel = 0;
     for (auto _ : state) {
@@ -101,9 +95,17 @@ void BM_FillPixel(benchmark::State& state) {
         ++pixel;
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * n);
-    const char* name = "?";
-    stipple_pattern_name(pattern, &name);
-    state.SetLabel(name);
+}
+
+void BM_FillPixel(benchmark::State& state) {
+    const auto pattern = static_cast<uint32_t>(state.range(0));
+    const auto arity = static_cast<uint32_t>(state.range(1));
+    const auto n = static_cast<uint32_t>(state.range(2));
+    const stipple::Sampler sampler = makeSampler(pattern, arity, n);
+    if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
+    warmPoisson(pattern, arity, n);
+    timeFillPixel(state, sampler.handle(), arity, n);
+    label(state, pattern);
 }
 
 // BM_BlueNoiseFill/<pattern>/<arity>/<N>/<blue>: fill_pixel with and without STIPPLE_SAMPLER_FLAG_BLUE_NOISE, the
@@ -116,20 +118,7 @@ void BM_BlueNoiseFill(benchmark::State& state) {
     const uint32_t flags = state.range(3) != 0 ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0u;
     const stipple::Sampler sampler = makeSampler(pattern, arity, n, flags);
     if (!sampler) return state.SkipWithError(sampler.status().message().c_str());
-    stipple_sampler s = sampler.handle();
-    std::vector<float> out(size_t(n) * arity);
-    uint32_t pixel = 0;
-    for (auto _ : state) {
-        // Pixels along rows of the image, so consecutive calls cross 64-pixel tiles as a renderer's do.
-        if (stipple_sampler_fill_pixel(s, pixel % 1024, pixel / 1024, 0, out.data(), out.size()) != STIPPLE_OK) {
-            state.SkipWithError(stipple_last_error_message());
-            break;
-        }
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-        ++pixel;
-    }
-    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+    timeFillPixel(state, sampler.handle(), arity, n);
     label(state, pattern);
 }
 

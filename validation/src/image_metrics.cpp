@@ -124,7 +124,11 @@ Image errorColourBar(int width, int height) {
 int blockColumns(int w) { return (w + kErrorBlockSize - 1) / kErrorBlockSize; }
 int blockCount(int w, int h) { return blockColumns(w) * blockColumns(h); }
 
-std::vector<double> blockSquaredErrors(const Image& reference, const Image& image, int x, int y, int w, int h) {
+namespace {
+
+// Per 8x8 block of the window (x, y, w, h): the sum over its finite pixels of score(squared RGB error, pixel index).
+template <typename Score>
+std::vector<double> sumPerBlock(const Image& reference, const Image& image, int x, int y, int w, int h, Score score) {
     checkShape(reference, "reference");
     checkShape(image, "compared");
     std::vector<double> blocks(size_t(blockCount(w, h)), 0.0);
@@ -135,9 +139,16 @@ std::vector<double> blockSquaredErrors(const Image& reference, const Image& imag
             if (!finitePixel(r) || !finitePixel(p)) continue;
             double sum = 0;
             for (int c = 0; c < 3; ++c) sum += (double(r[c]) - double(p[c])) * (double(r[c]) - double(p[c]));
-            blocks[size_t(j / kErrorBlockSize) * blockColumns(w) + i / kErrorBlockSize] += sum;
+            const size_t pixel = size_t(y + j) * size_t(reference.width) + size_t(x + i);
+            blocks[size_t(j / kErrorBlockSize) * blockColumns(w) + i / kErrorBlockSize] += score(sum, pixel);
         }
     return blocks;
+}
+
+} // namespace
+
+std::vector<double> blockSquaredErrors(const Image& reference, const Image& image, int x, int y, int w, int h) {
+    return sumPerBlock(reference, image, x, y, w, h, [](double squared, size_t) { return squared; });
 }
 
 std::vector<float> relativeErrorWeights(const Image& reference) {
@@ -182,23 +193,11 @@ double relativeNoiseFloor(const Image& varianceOfMean, const std::vector<float>&
 
 std::vector<double> blockRelativeSquaredErrors(const Image& reference, const Image& image,
                                                const std::vector<float>& weights, int x, int y, int w, int h) {
-    checkShape(reference, "reference");
-    checkShape(image, "compared");
     if (weights.size() != size_t(reference.width) * size_t(reference.height))
         throw std::invalid_argument("relative squared errors: the weights do not match the reference's size");
     const double cap = 3.0 * kRelativeErrorCap * kRelativeErrorCap;
-    std::vector<double> blocks(size_t(blockCount(w, h)), 0.0);
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            const float* r = reference.pixel(x + i, y + j);
-            const float* p = image.pixel(x + i, y + j);
-            if (!finitePixel(r) || !finitePixel(p)) continue;
-            double sum = 0;
-            for (int c = 0; c < 3; ++c) sum += (double(r[c]) - double(p[c])) * (double(r[c]) - double(p[c]));
-            const double weight = weights[size_t(y + j) * size_t(reference.width) + size_t(x + i)];
-            blocks[size_t(j / kErrorBlockSize) * blockColumns(w) + i / kErrorBlockSize] += std::min(weight * sum, cap);
-        }
-    return blocks;
+    return sumPerBlock(reference, image, x, y, w, h,
+                       [&](double squared, size_t pixel) { return std::min(double(weights[pixel]) * squared, cap); });
 }
 
 std::vector<double> blockSums(const std::vector<float>& map, int mapWidth, int x, int y, int w, int h) {
