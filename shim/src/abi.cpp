@@ -59,6 +59,15 @@ inline void checkCapacity(size_t outCount, size_t needed) {
         throwCapacity(outCount, needed);
 }
 
+// A run of sample indices [first, first + count): at least one, and all of them uint32.
+void checkSampleRange(uint32_t first, uint32_t count) {
+    if (count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
+    if (uint64_t(first) + count > (uint64_t(1) << 32))
+        throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is " +
+                                                    std::to_string(uint64_t(first) + count) +
+                                                    "; expected at most 2^32 (sample indices are uint32)");
+}
+
 // Output structs: struct_size is set by the caller; we fill what we know and zero the rest of its struct.
 template <typename Info>
 void prepareOutput(Info* info, const char* argument) {
@@ -222,11 +231,7 @@ STIPPLE_API stipple_status stipple_sampler_stream_fill(stipple_sampler sampler, 
     return callGuarded(__func__, [&] {
         const stipple::detail::Sampler& s = checkedSampler(sampler);
         checkArity(s, arity);
-        if (sample_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
-        if (uint64_t(first_sample) + sample_count > (uint64_t(1) << 32))
-            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is " +
-                                                        std::to_string(uint64_t(first_sample) + sample_count) +
-                                                        "; expected at most 2^32 (sample indices are uint32)");
+        checkSampleRange(first_sample, sample_count);
         requireNonNull(out, "out");
         checkCapacity(out_count, size_t(sample_count) * arity);
         s.streamFill(pixel_x, pixel_y, first_sample, sample_count, dimension, arity, out);
@@ -297,11 +302,7 @@ STIPPLE_API stipple_status stipple_sampler_array_fill(stipple_sampler sampler, u
         const stipple::detail::Sampler& s = checkedSampler(sampler);
         checkArity(s, arity);
         checkArrayCount(s, k);
-        if (sample_count == 0) throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "sample_count is 0; expected at least 1");
-        if (uint64_t(first_sample) + sample_count > (uint64_t(1) << 32))
-            throw Error(STIPPLE_ERROR_OUT_OF_RANGE, "first_sample + sample_count is " +
-                                                        std::to_string(uint64_t(first_sample) + sample_count) +
-                                                        "; expected at most 2^32 (sample indices are uint32)");
+        checkSampleRange(first_sample, sample_count);
         requireNonNull(out, "out");
         checkCapacity(out_count, uint64_t(sample_count) * k * arity);
         s.arrayFill(pixel_x, pixel_y, first_sample, sample_count, array_index, arity, k, out);
