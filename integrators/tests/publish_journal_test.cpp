@@ -11,11 +11,14 @@
 #include <stipple/render/publish_journal.h>
 #include <stipple/render/temp_files.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <set>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include <sys/wait.h>
@@ -261,4 +264,36 @@ BOOST_AUTO_TEST_CASE(a_symlink_with_a_temporary_name_is_left_alone) {
     sweepStaleTemps(f.dir.string());
     BOOST_TEST(fs::is_symlink(temp));
     BOOST_TEST(f.read("precious") == "keep");
+}
+
+// SIGTERM while threads keep creating, writing and removing temporaries (as the renderer's writers do, each file
+// under a SignalHold): the process must end by the signal and leave no temporary. Twenty rounds, the signal at a
+// different moment of the writes each time.
+BOOST_AUTO_TEST_CASE(sigterm_while_threads_write_temporaries_leaves_none) {
+    Folder f("sigterm-writers");
+    for (int round = 0; round < 20; ++round) {
+        const pid_t pid = fork();
+        BOOST_REQUIRE(pid >= 0);
+        if (pid == 0) {
+            installTempCleanupOnSignals();
+            for (int w = 0; w < 3; ++w)
+                std::thread([&f, w] {
+                    for (;;) {
+                        TempPath temp((f.dir / ("out-" + std::to_string(w) + ".txt")).string());
+                        SignalHold hold;
+                        std::ofstream(temp.path()) << std::string(4096, 'x');
+                    }
+                }).detach();
+            std::this_thread::sleep_for(std::chrono::microseconds(2000 + 450 * round));
+            kill(getpid(), SIGTERM);
+            for (;;) pause();
+        }
+        int status = 0;
+        waitpid(pid, &status, 0);
+        BOOST_TEST_REQUIRE((WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM),
+                           "round " << round << ": the child did not end by SIGTERM (status " << status << ")");
+        for (const auto& e : fs::directory_iterator(f.dir))
+            BOOST_TEST(!isTempName(e.path().filename().string()),
+                       "round " << round << ": left " << e.path().filename().string());
+    }
 }

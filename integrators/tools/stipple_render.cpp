@@ -118,10 +118,14 @@ int main(int argc, char** argv) {
         // works. A 1-pixel PNG is written beside the output and removed.
         try {
             TempPath probe(png);
-            // open(2) first: its errno says why (no such folder, read-only, no space) where OIIO's message does not.
-            const int fd = ::open(probe.path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-            if (fd < 0) throw std::runtime_error("cannot create a file beside it: " + std::string(std::strerror(errno)));
-            ::close(fd);
+            {
+                // open(2) first: its errno says why (no such folder, read-only, no space) where OIIO's does not.
+                SignalHold hold;
+                const int fd = ::open(probe.path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+                if (fd < 0)
+                    throw std::runtime_error("cannot create a file beside it: " + std::string(std::strerror(errno)));
+                ::close(fd);
+            }
             writePng(probe.path(), Image{1, 1, {0.5f, 0.5f, 0.5f}}, exposure);
         } catch (const std::exception& e) {
             std::cerr << "stipple-render: output " << output << " cannot be written (checked before rendering): "

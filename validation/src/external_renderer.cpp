@@ -3,6 +3,7 @@
 
 #include "external_renderer.h"
 #include "external_command.h"
+#include "results.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -244,12 +245,7 @@ Reference ExternalRenderer::reference(const render::RenderOptions& o, const std:
     const render::ImageMetadata meta = {{"scene", scene_.name}, {"reference_key", ref.key}};
     render::writeExr(cache.image, ref.image, meta);
     render::writeExr(cache.variance, ref.variance, meta);
-    const std::string partial = cache.key + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary);
-        out << material;
-    }
-    fs::rename(partial, cache.key, ignored);
+    writeTextFile(cache.key, material); // last: it vouches for the two images
     return ref;
 }
 

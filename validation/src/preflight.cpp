@@ -57,6 +57,7 @@ std::map<std::string, std::string> preflight(const PreflightInputs& in) {
         render::sweepStaleTemps(in.cacheDir);
         {
             render::TempPath probe((fs::path(in.cacheDir) / "write-probe").string());
+            render::SignalHold hold;
             std::ofstream out(probe.path());
             out << "probe\n";
             out.close();

@@ -90,6 +90,7 @@ void publishReferenceEntry(const std::vector<std::pair<std::string, const render
     }
     temps.push_back(std::make_unique<render::TempPath>(provenancePath));
     {
+        render::SignalHold hold;
         std::ofstream out(temps.back()->path(), std::ios::binary);
         out << json;
         out.close();

@@ -132,6 +132,7 @@ std::string csvField(const std::string& text) {
 
 void writeTextFile(const std::string& path, const std::string& text) {
     render::TempPath tmp(path);
+    render::SignalHold hold; // written and renamed before a signal's cleanup, or not at all
     {
         std::ofstream out(tmp.path(), std::ios::binary);
         if (!out) throw std::runtime_error("cannot write " + tmp.path());

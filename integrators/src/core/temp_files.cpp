@@ -15,6 +15,7 @@
 #include <iostream>
 #include <mutex>
 #include <set>
+#include <shared_mutex>
 #include <thread>
 #include <vector>
 
@@ -40,9 +41,10 @@ std::set<std::string>& registry() {
     static std::set<std::string> r;
     return r;
 }
-// Held by SignalHold; the cleanup thread takes it before removing anything, so a group of renames completes.
-std::mutex& holdMutex() {
-    static std::mutex m;
+// Shared by every SignalHold; the cleanup thread takes it exclusively before removing anything and keeps it until
+// the process ends, so a group of renames completes and no temporary is created after the removal.
+std::shared_mutex& holdMutex() {
+    static std::shared_mutex m;
     return m;
 }
 
@@ -67,13 +69,13 @@ extern "C" void onSignal(int sig) {
 void cleanupThread() {
     unsigned char b = 0;
     while (read(signalPipe[0], &b, 1) < 0 && errno == EINTR) {}
-    std::lock_guard hold(holdMutex());
+    holdMutex().lock(); // never unlocked: a writer waiting for a SignalHold waits until the process ends
     {
         std::lock_guard lock(registryMutex());
-        // The other threads run on while this one cleans up: a writer may add a file to a temporary folder after
-        // remove_all listed it (remove_all then fails with "directory not empty"), or create_directories may bring
-        // a removed folder back. So remove until a pass finds nothing, twice over (~1 ms apart), before dying.
-        for (int attempt = 0, clean = 0; attempt < 200 && clean < 2; ++attempt) {
+        // Files are written under a SignalHold, so none appears from here on. Writers that work without one (a
+        // child process drawing into a temporary folder) may still add to a folder after remove_all listed it, or
+        // bring a removed folder back: remove until two passes ~1 ms apart find nothing, and end right after.
+        for (int attempt = 0, clean = 0; attempt < 200; ++attempt) {
             bool left = false;
             for (const std::string& p : registry()) {
                 std::error_code ec;
@@ -81,6 +83,7 @@ void cleanupThread() {
                 left = left || fs::exists(p, ec);
             }
             clean = left ? 0 : clean + 1;
+            if (clean == 2) break;
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
         registry().clear();
@@ -237,8 +240,8 @@ void TempPath::release() {
     registry().erase(path_);
 }
 
-SignalHold::SignalHold() { holdMutex().lock(); }
+SignalHold::SignalHold() { holdMutex().lock_shared(); }
 
-SignalHold::~SignalHold() { holdMutex().unlock(); }
+SignalHold::~SignalHold() { holdMutex().unlock_shared(); }
 
 } // namespace stipple::render

@@ -30,6 +30,7 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, const v
     std::optional<TempPath> temp;
     if (!direct) temp.emplace(path);
     const std::string tmp = direct ? path : temp->path();
+    SignalHold hold; // created and closed (and renamed) before a signal's cleanup, or not at all
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw std::runtime_error("cannot write '" + path + "': " + OIIO::geterror());
     if (!out->open(tmp, spec) || !out->write_image(type, pixels)) {

@@ -56,8 +56,10 @@ private:
     bool released_ = false;
 };
 
-// Defers the signal cleanup while alive, so a group of renames (an EXR and its PNG) is not cut in half by a
-// SIGINT / SIGTERM; the cleanup (and the exit) happens when the guard ends.
+// Defers the signal cleanup while alive. Two uses: a group of renames (an EXR and its PNG) is not cut in half by a
+// SIGINT / SIGTERM, and a temporary is created, written and closed under one, so it cannot appear after the cleanup
+// removed it (once the cleanup has begun, a new SignalHold waits until the process ends). Several threads may hold
+// one at once; a thread must not take a second while it holds one.
 class SignalHold {
 public:
     SignalHold();
@@ -66,7 +68,7 @@ public:
     SignalHold& operator=(const SignalHold&) = delete;
 
 private:
-    // Holds the lock the cleanup thread takes first.
+    // Holds, shared, the lock the cleanup thread takes exclusively.
 };
 
 } // namespace stipple::render
