@@ -33,11 +33,6 @@ std::vector<std::string> scenesOf(const Check& c, const Matrix& m) {
     return names;
 }
 
-// Worst status wins: FAIL > NOT SEPARATED > PASS.
-void worsen(CheckStatus& s, CheckStatus t) {
-    if (t == CheckStatus::Fail || (t == CheckStatus::NotSeparated && s == CheckStatus::Pass)) s = t;
-}
-
 std::string rmsText(const CellAggregate& c) {
     return fmt("%s %.5g ± %.2g", c.pattern.c_str(), c.rms.mean, c.rms.halfWidth);
 }

@@ -14,6 +14,10 @@ namespace stipple::validation {
 
 enum class CheckStatus { Pass, Fail, NotSeparated };
 const char* checkStatusName(CheckStatus status); // "PASS", "FAIL", "NOT SEPARATED"
+// Worst status wins: FAIL > NOT SEPARATED > PASS.
+inline void worsen(CheckStatus& s, CheckStatus t) {
+    if (t == CheckStatus::Fail || (t == CheckStatus::NotSeparated && s == CheckStatus::Pass)) s = t;
+}
 
 // One comparison of a compare check: pattern A's error over pattern B's in one scene and region.
 struct VerdictRow {

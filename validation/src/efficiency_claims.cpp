@@ -14,10 +14,6 @@ namespace stipple::validation {
 
 namespace {
 
-void worsen(CheckStatus& s, CheckStatus t) {
-    if (t == CheckStatus::Fail || (t == CheckStatus::NotSeparated && s == CheckStatus::Pass)) s = t;
-}
-
 // Judges the claimed order on one ranking; appends the figures.
 CheckStatus judge(const Check& k, const EfficiencyRanking& r, const std::string& where,
                   std::vector<std::string>& figures) {

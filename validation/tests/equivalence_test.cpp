@@ -193,7 +193,7 @@ BOOST_AUTO_TEST_CASE(capped_second_moment_is_exact_at_the_limits) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(relative_capped_intervals_cover_the_true_ratio_with_heavy_tailed_errors) {
+BOOST_AUTO_TEST_CASE(relative_capped_intervals_cover_the_true_ratio_with_heavy_tailed_errors, *boost::unit_test::label("coverage")) {
     // The compare check's estimator (capped relative squared error) at the quick matrix's K = 8 seeds: the same
     // requirement, ≥ 93%, on 600 cases per law (a true 95% falls below 93% with probability ≈ 1%; with 300 cases
     // ≈ 5%, and one 300-case stream of the Gaussian law gave 91.7% where 1200 cases gave 95.7%).
@@ -206,7 +206,7 @@ BOOST_AUTO_TEST_CASE(relative_capped_intervals_cover_the_true_ratio_with_heavy_t
     }
 }
 
-BOOST_AUTO_TEST_CASE(intervals_cover_the_true_ratio_with_heavy_tailed_errors) {
+BOOST_AUTO_TEST_CASE(intervals_cover_the_true_ratio_with_heavy_tailed_errors, *boost::unit_test::label("coverage")) {
     // 300 cases per law at K = 4 seeds (the fewest a matrix allows); the 95% intervals must cover ≥ 93%: with 300 cases
     // a true coverage of 95% falls below 93% with probability ≈ 5% (binomial), 91% would pass with probability ≈ 10%.
     for (const auto& [law, name] : {std::pair{Law::Gaussian, "gaussian"}, std::pair{Law::StudentT5, "student-t5"},
