@@ -13,6 +13,8 @@
 #   STIPPLE_JOBS                        parallel build and test jobs (default 2)
 #   STIPPLE_SANITIZERS                  "asan tsan" (default), or one of them
 #   STIPPLE_TSAN_EXCLUDE                ctest -E regex of parallel tests to leave out of the TSan run (default: none)
+#   STIPPLE_BUILD_ONLY                  1: configure and build, run nothing (ci/test.sh builds the TSan tree so, in
+#                                       the background, while other tests run)
 #
 # TSan and TBB: Debian's libtbb is not instrumented, so TSan cannot see tbb::parallel_for's hand-overs. TSan builds
 # of the renderer therefore render tiles on std::thread workers (integrators/src/renderer.cpp, under
@@ -38,27 +40,43 @@ configure_and_build() { # preset, build dir, ctest selection...
     cmake --build "$dir" -j "$jobs" --target $targets
 }
 
+# A fresh tree has no test times, and ctest then starts the tests in their order, a long one maybe last. The release
+# run's times (its CTestCostData.txt) order them longest first here too: a sanitizer scales them all alike.
+seed_test_costs() { # build dir
+    local costs=build/release/Testing/Temporary/CTestCostData.txt
+    if [[ -f "$costs" && ! -f "$1/Testing/Temporary/CTestCostData.txt" ]]; then
+        mkdir -p "$1/Testing/Temporary" && cp "$costs" "$1/Testing/Temporary/"
+    fi
+}
+
 status=0
 start=$SECONDS
+run=$([[ "${STIPPLE_BUILD_ONLY:-0}" == 1 ]] && echo 0 || echo 1)
 if [[ " $which " == *" asan "* ]]; then
     dir=${STIPPLE_ASAN_DIR:-build/asan}
     configure_and_build asan "$dir" -LE 'slow|slurm'
-    # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
-    # third-party libraries (see ci/sanitizers.supp).
-    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
-    export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
-    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-    ctest --test-dir "$dir" -LE 'slow|slurm' -j "$jobs" --output-on-failure --timeout 900 || status=1
-    unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
+    if [[ $run == 1 ]]; then
+        # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
+        # third-party libraries (see ci/sanitizers.supp).
+        seed_test_costs "$dir"
+        export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+        export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
+        export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+        ctest --test-dir "$dir" -LE 'slow|slurm' -j "$jobs" --output-on-failure --timeout 900 || status=1
+        unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
+    fi
     echo "sanitizers.sh: asan done after $((SECONDS - start)) s"
 fi
 if [[ " $which " == *" tsan "* ]]; then
     dir=${STIPPLE_TSAN_DIR:-build/tsan}
     exclude=${STIPPLE_TSAN_EXCLUDE:-}
     configure_and_build tsan "$dir" -L parallel ${exclude:+-E "$exclude"}
-    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
-    ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j "$jobs" --output-on-failure --timeout 900 || status=1
-    unset TSAN_OPTIONS
+    if [[ $run == 1 ]]; then
+        seed_test_costs "$dir"
+        export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
+        ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j "$jobs" --output-on-failure --timeout 900 || status=1
+        unset TSAN_OPTIONS
+    fi
     echo "sanitizers.sh: tsan done after $((SECONDS - start)) s"
 fi
 echo "sanitizers.sh: $((SECONDS - start)) s, status $status"
