@@ -8,6 +8,7 @@
 #include "hash.h"
 #include "pattern_registry.h"
 #include "patterns.h"
+#include "simd_avx512.h"
 
 namespace stipple::detail {
 
@@ -76,10 +77,11 @@ template <uint32_t Arity>
                                             const CrossPixelStrata& blue) {
     blueHashedFloats<Arity>(key, first, count, out, blue);
 }
+// AVX-512: hand-written (independent_avx512.cpp).
 template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void blueFloatsAvx512(uint64_t key, uint32_t first, uint32_t count, float* out,
-                                                const CrossPixelStrata& blue) {
-    blueHashedFloats<Arity>(key, first, count, out, blue);
+void blueFloatsAvx512(uint64_t key, uint32_t first, uint32_t count, float* out, const CrossPixelStrata& blue) {
+    const BlueSubCellArgs subCells{blue.offsetKey(), {blue.lattice.c[0], blue.lattice.c[1], blue.lattice.c[2]}};
+    independentBlueAvx512(key, subCells, Arity, first, count, out);
 }
 #endif
 

@@ -51,7 +51,8 @@ Sampler::Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std:
     }
 }
 
-uint64_t Sampler::pixelKey(const SetRef& set) const {
+// Inlined into its callers, so the blue-noise path computes it side by side with the tile's key.
+[[gnu::always_inline]] inline uint64_t Sampler::pixelKey(const SetRef& set) const {
     return streamWord(setKeyFrom(seedKey_, set.pixelX, set.pixelY, set.d), set.streamArity);
 }
 
@@ -78,6 +79,8 @@ void Sampler::point(const SetRef& set, const Dimension& dim, uint32_t p, float* 
 // and the per-pixel part from the plain set key, so blocks and streams are blue noise on their own and every
 // sample stays uniform.
 void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const {
+    // The pixel's and the tile's key are independent chains of hashes: both in one block, so they overlap.
+    const SetKey pixel = keyBlock(ops_, pixelKey(set), set.block);
     const SetKey tile = keyBlock(
         ops_,
         streamWord(setKeyFrom(tileSeedKey_, set.pixelX >> kBlueNoiseTileLog2, set.pixelY >> kBlueNoiseTileLog2, set.d),
@@ -86,7 +89,7 @@ void Sampler::fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t fi
     switch (ops_.blueNoise) {
     case BlueNoiseMode::CrossPixelStrata: {
         const CrossPixelStrata strata(tile.key, set.pixelX, set.pixelY, dim.arity, ops_.latticeUse);
-        return ops_.fillStrata(keyBlock(ops_, pixelKey(set), set.block), dim, first, count, out, strata);
+        return ops_.fillStrata(pixel, dim, first, count, out, strata);
     }
     case BlueNoiseMode::Unsupported: break; // refused at creation (sampler_create.cpp)
     }

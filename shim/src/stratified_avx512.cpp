@@ -4,6 +4,7 @@
 // and GFNI intrinsics, 16 points per step: the same values, computed as progressivePoint does (simd_avx512.h).
 #include "batch_isa.h"
 #include "hash.h"
+#include "hash_avx512.h"
 #include "progressive_strata.h"
 #include "simd_avx512.h"
 
@@ -47,22 +48,6 @@ STIPPLE_KERNEL __m512i axisJitterHead(__m512i u, uint32_t c) {
     __m512i x = mul32(c ? _mm512_xor_si512(u, _mm512_set1_epi32(int(c))) : u, 0x7feb352du);
     return mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
 }
-
-// Lane indices that interleave three 16-lane axes into 48 floats (float f is axis f % 3 of point f / 3): the
-// first permute takes x or y, the second keeps that or takes z.
-struct Interleave3 {
-    alignas(64) int32_t xy[3][16];
-    alignas(64) int32_t z[3][16];
-    constexpr Interleave3() : xy(), z() {
-        for (int w = 0; w < 3; ++w)
-            for (int l = 0; l < 16; ++l) {
-                const int f = 16 * w + l, point = f / 3, c = f % 3;
-                xy[w][l] = (c == 1 ? 16 : 0) + point;
-                z[w][l] = c == 2 ? 16 + point : l;
-            }
-    }
-};
-inline constexpr Interleave3 kInterleave3{};
 
 // The GF(2) affine matrix that sets bit i of every byte to bit from[i] (gf2p8affine: result bit i is the parity of
 // byte 7 - i of the matrix ANDed with the input byte); from[i] < 0 leaves bit i zero.
@@ -140,15 +125,6 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
                                             0xf6)); // a | (b ^ c)
 }
 
-// mix64 (hash.h) of 8 64-bit lanes.
-STIPPLE_KERNEL __m512i mix64(__m512i z) {
-    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)),
-                           _mm512_set1_epi64(int64_t(0xbf58476d1ce4e5b9ull)));
-    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)),
-                           _mm512_set1_epi64(int64_t(0x94d049bb133111ebull)));
-    return _mm512_xor_si512(z, _mm512_srli_epi64(z, 31));
-}
-
 // The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
 // ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
 template <uint32_t Arity>
@@ -164,7 +140,7 @@ STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
         if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
         const __m512i counter =
             _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)), _mm512_set1_epi64(int64_t(kGolden64)));
-        half[h] = _mm512_cvtepi64_epi32(mix64(_mm512_xor_si512(counter, _mm512_set1_epi64(int64_t(offsetKey)))));
+        half[h] = _mm512_cvtepi64_epi32(hashAtScaled(_mm512_set1_epi64(int64_t(offsetKey)), counter));
     }
     return _mm512_inserti64x4(_mm512_castsi256_si512(half[0]), half[1], 1);
 }
