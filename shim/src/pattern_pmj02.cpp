@@ -39,6 +39,7 @@ struct Pmj02Set {
     uint32_t indexSeed;
     uint32_t scramble[3];
     uint32_t offset; // sequence index of the block's first point
+    uint32_t length; // points in the sequence
 
     Pmj02Set(uint64_t key, uint32_t block, const Dimension& dim) {
         const Pmj02Family& family = *dim.pmj02;
@@ -49,6 +50,7 @@ struct Pmj02Set {
         const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
         const uint32_t sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
         xy = family.sequence(sequence);
+        length = 1u << family.storedLog2Length();
         z = dim.arity == 3 ? family.depth(sequence) : nullptr;
         indexSeed = static_cast<uint32_t>(h1);
         scramble[0] = static_cast<uint32_t>(h2);
@@ -204,18 +206,34 @@ template <uint32_t Arity>
         }
         for (uint32_t base = chunk; base < chunkEnd; base += 16) {
             const uint32_t points = count - base < 16 ? count - base : 16;
-            const __mmask16 live = __mmask16((1u << points) - 1u);
             const __m512i index = _mm512_load_si512(chunkIndex + (base - chunk));
-            const __m512i pair = _mm512_slli_epi32(index, 1);
+            __m512i coordinate[Arity];
+            if ((set.offset + first + base) % 16 == 0 && set.length >= 16) {
+                // An aligned block's 16 indices are the 16 of one aligned run of the table (the octave shuffle is
+                // an Owen scramble: bits 4 and up of i - octave fix those of its image; block 0's all lie below
+                // 16), so two loads and a lane permute per axis replace the gathers (whose latency a short call
+                // waits on). The whole run exists even past a tail: the length is a multiple of 16.
+                const uint32_t run = static_cast<uint32_t>(_mm_cvtsi128_si32(_mm512_castsi512_si128(index))) & ~15u;
+                const __m512i lane = _mm512_and_si512(index, _mm512_set1_epi32(15));
+                const __m512i pair = _mm512_slli_epi32(lane, 1);
+                const __m512i lo = _mm512_loadu_si512(table + 2 * size_t(run));
+                const __m512i hi = _mm512_loadu_si512(table + 2 * size_t(run) + 16);
+                coordinate[0] = _mm512_permutex2var_epi32(lo, pair, hi);
+                if constexpr (Arity >= 2) coordinate[1] = _mm512_permutex2var_epi32(lo, _mm512_add_epi32(pair, one), hi);
+                if constexpr (Arity == 3)
+                    coordinate[2] = _mm512_permutexvar_epi32(lane, _mm512_loadu_si512(set.z + run));
+            } else {
+                const __mmask16 live = __mmask16((1u << points) - 1u);
+                const __m512i pair = _mm512_slli_epi32(index, 1);
+                coordinate[0] = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4);
+                if constexpr (Arity >= 2)
+                    coordinate[1] = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4);
+                if constexpr (Arity == 3)
+                    coordinate[2] = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
+                                                                reinterpret_cast<const int*>(set.z), 4);
+            }
             __m512 axis[Arity];
-            axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
-            if constexpr (Arity >= 2)
-                axis[1] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4),
-                                    scramble[1]);
-            if constexpr (Arity == 3)
-                axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
-                                                                reinterpret_cast<const int*>(set.z), 4),
-                                    scramble[2]);
+            for (uint32_t c = 0; c < Arity; ++c) axis[c] = unitValue(coordinate[c], scramble[c]);
             const uint32_t floats = points * Arity;
             float* o = out + size_t(base) * Arity;
             if constexpr (Arity == 1) {
