@@ -43,14 +43,24 @@ struct Pmj02Set {
 
     Pmj02Set(uint64_t key, uint32_t block, const Dimension& dim) {
         const Pmj02Family& family = *dim.pmj02;
-        const uint32_t blocksPerSequence = (1u << family.storedLog2Length()) / dim.setSize;
-        const uint32_t generation = block / blocksPerSequence;
-        offset = (block - generation * blocksPerSequence) * dim.setSize;
-        key = hashCombine(key, generation);
-        const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
-        const uint32_t sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
-        xy = family.sequence(sequence);
         length = 1u << family.storedLog2Length();
+        // key = hashCombine(key, generation). Block 0 (every fill_pixel) is generation 0 at offset 0: no divisions,
+        // and the generation's own mix is a constant, off the call's chain of hashes.
+        constexpr uint64_t kFirstGeneration = mix64(0 + kGolden64);
+        uint64_t generationWord = kFirstGeneration;
+        offset = 0;
+        if (block != 0) {
+            const uint32_t blocksPerSequence = length / dim.setSize;
+            const uint32_t generation = block / blocksPerSequence;
+            offset = (block - generation * blocksPerSequence) * dim.setSize;
+            generationWord = mix64(generation + kGolden64);
+        }
+        key = mix64(key ^ generationWord);
+        const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
+        // (h0 >> 32) mod setCount; a family's count is a power of two (setCountFor), a mask instead of a division.
+        const uint32_t draw = static_cast<uint32_t>(h0 >> 32), sets = family.setCount();
+        const uint32_t sequence = (sets & (sets - 1)) == 0 ? draw & (sets - 1) : draw % sets;
+        xy = family.sequence(sequence);
         z = dim.arity == 3 ? family.depth(sequence) : nullptr;
         indexSeed = static_cast<uint32_t>(h1);
         scramble[0] = static_cast<uint32_t>(h2);
@@ -171,8 +181,8 @@ template <uint32_t Arity>
     __m512i scramble[Arity];
     for (uint32_t c = 0; c < Arity; ++c) scramble[c] = _mm512_set1_epi32(int(set.scramble[c]));
     const int* table = reinterpret_cast<const int*>(set.xy);
-    // Two passes per chunk: the index order first (hashes only, independent across blocks), then the gathers and
-    // value scrambles, so that neither waits on the other's latency chain.
+    // Two passes per chunk: the index order first (hashes only, independent across blocks), then the table reads
+    // and value scrambles, so that neither waits on the other's latency chain.
     constexpr uint32_t kChunkBlocks = 16;
     alignas(64) uint32_t chunkIndex[kChunkBlocks * 16];
     for (uint32_t chunk = 0; chunk < count; chunk += kChunkBlocks * 16) {
@@ -207,33 +217,46 @@ template <uint32_t Arity>
         for (uint32_t base = chunk; base < chunkEnd; base += 16) {
             const uint32_t points = count - base < 16 ? count - base : 16;
             const __m512i index = _mm512_load_si512(chunkIndex + (base - chunk));
-            __m512i coordinate[Arity];
-            if ((set.offset + first + base) % 16 == 0 && set.length >= 16) {
+            __m512 axis[Arity];
+            const uint32_t blockFirst = set.offset + first + base;
+            if (blockFirst % 16 == 0 && set.length >= 16) {
                 // An aligned block's 16 indices are the 16 of one aligned run of the table (the octave shuffle is
                 // an Owen scramble: bits 4 and up of i - octave fix those of its image; block 0's all lie below
-                // 16), so two loads and a lane permute per axis replace the gathers (whose latency a short call
-                // waits on). The whole run exists even past a tail: the length is a multiple of 16.
-                const uint32_t run = static_cast<uint32_t>(_mm_cvtsi128_si32(_mm512_castsi512_si128(index))) & ~15u;
+                // 16). So the run is loaded and scrambled in its own order, and a lane permute per axis puts the
+                // values in the block's: no gathers, and the value scramble does not wait for the index order (a
+                // short call's latency). The whole run exists even past a tail: the length is a multiple of 16.
+                const uint32_t run =
+                    blockFirst == 0 ? 0u : static_cast<uint32_t>(_mm_cvtsi128_si32(_mm512_castsi512_si128(index))) & ~15u;
                 const __m512i lane = _mm512_and_si512(index, _mm512_set1_epi32(15));
-                const __m512i pair = _mm512_slli_epi32(lane, 1);
                 const __m512i lo = _mm512_loadu_si512(table + 2 * size_t(run));
                 const __m512i hi = _mm512_loadu_si512(table + 2 * size_t(run) + 16);
-                coordinate[0] = _mm512_permutex2var_epi32(lo, pair, hi);
-                if constexpr (Arity >= 2) coordinate[1] = _mm512_permutex2var_epi32(lo, _mm512_add_epi32(pair, one), hi);
+                if constexpr (Arity == 1) {
+                    const __m512i x = _mm512_permutex2var_epi32(lo, _mm512_slli_epi32(lanes, 1), hi);
+                    axis[0] = _mm512_permutexvar_ps(lane, unitValue(x, scramble[0]));
+                } else {
+                    // (x, y) pairs in run order, each scrambled with its axis' seed (x's in the even lanes), then
+                    // picked per lane.
+                    const __m512i pairScramble = _mm512_mask_mov_epi32(scramble[0], __mmask16(0xaaaa), scramble[1]);
+                    const __m512 valuesLo = unitValue(lo, pairScramble), valuesHi = unitValue(hi, pairScramble);
+                    const __m512i pair = _mm512_slli_epi32(lane, 1);
+                    axis[0] = _mm512_permutex2var_ps(valuesLo, pair, valuesHi);
+                    axis[1] = _mm512_permutex2var_ps(valuesLo, _mm512_add_epi32(pair, one), valuesHi);
+                }
                 if constexpr (Arity == 3)
-                    coordinate[2] = _mm512_permutexvar_epi32(lane, _mm512_loadu_si512(set.z + run));
+                    axis[2] = _mm512_permutexvar_ps(lane, unitValue(_mm512_loadu_si512(set.z + run), scramble[2]));
             } else {
                 const __mmask16 live = __mmask16((1u << points) - 1u);
                 const __m512i pair = _mm512_slli_epi32(index, 1);
-                coordinate[0] = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4);
+                axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4),
+                                    scramble[0]);
                 if constexpr (Arity >= 2)
-                    coordinate[1] = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4);
+                    axis[1] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4),
+                                        scramble[1]);
                 if constexpr (Arity == 3)
-                    coordinate[2] = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
-                                                                reinterpret_cast<const int*>(set.z), 4);
+                    axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
+                                                                    reinterpret_cast<const int*>(set.z), 4),
+                                        scramble[2]);
             }
-            __m512 axis[Arity];
-            for (uint32_t c = 0; c < Arity; ++c) axis[c] = unitValue(coordinate[c], scramble[c]);
             const uint32_t floats = points * Arity;
             float* o = out + size_t(base) * Arity;
             if constexpr (Arity == 1) {
