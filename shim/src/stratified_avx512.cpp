@@ -129,7 +129,7 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
 // ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
 template <uint32_t Arity>
 STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
-    __m256i half[2];
+    __m512i half[2];
     for (int h = 0; h < 2; ++h) {
         __m512i wide[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
@@ -140,9 +140,11 @@ STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
         if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
         const __m512i counter =
             _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)), _mm512_set1_epi64(int64_t(kGolden64)));
-        half[h] = _mm512_cvtepi64_epi32(hashAtScaled(_mm512_set1_epi64(int64_t(offsetKey)), counter));
+        half[h] = hashAtScaled(_mm512_set1_epi64(int64_t(offsetKey)), counter);
     }
-    return _mm512_inserti64x4(_mm512_castsi256_si512(half[0]), half[1], 1);
+    // The low dwords of both halves in lane order: one permute.
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    return _mm512_permutex2var_epi32(half[0], even, half[1]);
 }
 
 // jitterInSubCell (blue_noise.h) of 16 lanes: the sub-cell tent((c + o) mod Q), Q = 2^L, with the tent as
@@ -158,19 +160,33 @@ STIPPLE_KERNEL __m512i jitterInSubCell(uint32_t lattice, __m512i offsets, uint32
     return _mm512_or_si512(_mm512_slli_epi32(t, 32 - L), _mm512_srli_epi32(jitter, L));
 }
 
-// 2D and 3D with the flag: the full jitter words (axisJitterHead then lowbias32's last step), moved into the
-// pixel's sub-cells of the points' strata, as floats per axis.
+// With the flag, the first pass of a chunk of blocks leaves each block's cell bits (as top) and full jitter words
+// per axis here; the second moves the jitters into the pixel's sub-cells of the points' strata. Two passes, so
+// that the strata's 64-bit offset hashes do not lengthen one block's chain of latencies beyond what the core
+// overlaps across blocks.
+constexpr uint32_t kBlueChunkBlocks = 16;
 template <uint32_t Arity>
-STIPPLE_KERNEL void blueAxes(const __m512i* top, const __m512i* topMask, const __m128i* cellShift, __m512i t,
-                             const BlueSubCellArgs& blue, const __m128i* jitterShift, __m512* axis) {
-    __m512i cell[Arity];
-    for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
-    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey);
-    for (uint32_t c = 0; c < Arity; ++c) {
-        const __m512i x = axisJitterHead(t, c);
-        const __m512i jitter =
-            jitterInSubCell<Arity>(blue.lattice[c], offsets, c, _mm512_xor_si512(x, _mm512_srli_epi32(x, 16)));
-        axis[c] = valueOf(top[c], topMask[c], jitter, jitterShift[c]);
+struct BlueStage {
+    __m512i top[kBlueChunkBlocks][Arity];
+    __m512i jitter[kBlueChunkBlocks][Arity];
+};
+
+// The second pass over blocks [0, blocks) of a chunk whose first point is out's.
+template <uint32_t Arity>
+STIPPLE_KERNEL void blueSubCells(const BlueStage<Arity>& stage, uint32_t blocks, uint32_t points,
+                                 const BlueSubCellArgs& blue, const __m512i* topMask, const __m128i* cellShift,
+                                 const __m128i* jitterShift, float* out) {
+    for (uint32_t b = 0; b < blocks; ++b) {
+        __m512i cell[Arity];
+        for (uint32_t c = 0; c < Arity; ++c)
+            cell[c] = _mm512_srl_epi32(_mm512_and_si512(stage.top[b][c], topMask[c]), cellShift[c]);
+        const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey);
+        __m512 axis[Arity];
+        for (uint32_t c = 0; c < Arity; ++c)
+            axis[c] = valueOf(stage.top[b][c], topMask[c],
+                              jitterInSubCell<Arity>(blue.lattice[c], offsets, c, stage.jitter[b][c]), jitterShift[c]);
+        const uint32_t left = points - 16 * b;
+        storeInterleaved<Arity>(out + size_t(16 * b) * Arity, axis, (left < 16 ? left : 16) * Arity);
     }
 }
 
@@ -198,8 +214,12 @@ template <uint32_t Arity, bool Blue>
             stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
-    for (uint32_t base = 0; base < count; base += 16) {
+    alignas(64) BlueStage<Arity> stage;
+    for (uint32_t chunk = 0; chunk < count; chunk += kBlueChunkBlocks * 16) {
+      const uint32_t chunkEnd = count - chunk < kBlueChunkBlocks * 16 ? count : chunk + kBlueChunkBlocks * 16;
+      for (uint32_t base = chunk; base < chunkEnd; base += 16) {
         const uint32_t blockFirst = first + base;
+        const uint32_t block = (base - chunk) / 16;
         // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
         // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
         const __m512i reversed =
@@ -219,10 +239,8 @@ template <uint32_t Arity, bool Blue>
             const __m512i top = _mm512_shuffle_epi8(
                 bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
             if constexpr (Blue) {
-                const __m512i cell = _mm512_srl_epi32(_mm512_and_si512(top, topMask[0]), cellShift[0]);
-                const __m512i offsets = stratumOffsets<1>(&cell, blue->offsetKey);
-                const __m512i jitter = jitterInSubCell<1>(blue->lattice[0], offsets, 0, scrambled);
-                storeFirst(o, valueOf(top, topMask[0], jitter, jitterShift[0]), floats);
+                stage.top[block][0] = top;
+                stage.jitter[block][0] = scrambled;
             } else {
                 storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
             }
@@ -236,30 +254,34 @@ template <uint32_t Arity, bool Blue>
             if constexpr (Arity == 2) {
                 __m512i top0, top1;
                 cells2D(q, top0, top1);
-                __m512 x, y;
                 if constexpr (Blue) {
                     const __m512i top[2] = {top0, top1};
-                    __m512 axis[2];
-                    blueAxes<2>(top, topMask, cellShift, t, *blue, jitterShift, axis);
-                    x = axis[0], y = axis[1];
-                } else {
-                    x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
-                    y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                    for (uint32_t c = 0; c < 2; ++c) {
+                        const __m512i x = axisJitterHead(t, c);
+                        stage.top[block][c] = top[c];
+                        stage.jitter[block][c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                    }
+                    continue;
                 }
+                const __m512 x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
+                const __m512 y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
                 const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
                 v[0] = _mm512_permutex2var_ps(x, lo, y);
                 v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
             } else {
                 __m512i top[3];
                 cells3D(q, top);
-                __m512 axis[3];
                 if constexpr (Blue) {
-                    blueAxes<3>(top, topMask, cellShift, t, *blue, jitterShift, axis);
-                } else {
-                    for (uint32_t c = 0; c < 3; ++c)
-                        axis[c] =
-                            valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
+                    for (uint32_t c = 0; c < 3; ++c) {
+                        const __m512i x = axisJitterHead(t, c);
+                        stage.top[block][c] = top[c];
+                        stage.jitter[block][c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                    }
+                    continue;
                 }
+                __m512 axis[3];
+                for (uint32_t c = 0; c < 3; ++c)
+                    axis[c] = valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
                 // Interleave x, y, z.
                 for (uint32_t w = 0; w < 3; ++w) {
                     const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
@@ -269,6 +291,10 @@ template <uint32_t Arity, bool Blue>
             for (uint32_t w = 0; w < Arity; ++w)
                 if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
         }
+      }
+      if constexpr (Blue)
+          blueSubCells<Arity>(stage, (chunkEnd - chunk + 15) / 16, chunkEnd - chunk, *blue, topMask, cellShift,
+                              jitterShift, out + size_t(chunk) * Arity);
     }
 }
 
