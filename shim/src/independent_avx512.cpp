@@ -3,9 +3,9 @@
 //
 // Per point the values' hashes hashAt(key, p * arity + c) and the sub-cell offsets' hashAt(offsetKey, p) run on
 // 64-bit lanes whose scaled counters (counter + 1) * kGolden64 advance by one add per step (no multiply); one
-// permute per hash pair keeps the 32 bits each use reads (the offsets' low half, the values' high half). The move
-// into the sub-cell (jitterInSubCell, blue_noise.h) is done on the sub-cell's bits in place at the top of the word.
+// permute per hash pair keeps the 32 bits each use reads (the offsets' low half, the values' high half).
 #include "batch_isa.h"
+#include "blue_noise_avx512.h"
 #include "hash.h"
 #include "hash_avx512.h"
 #include "simd_avx512.h"
@@ -25,21 +25,12 @@ STIPPLE_KERNEL __m512i dwordsOf(__m512i lo, __m512i hi, int odd) {
     return _mm512_permutex2var_epi32(lo, odd ? _mm512_add_epi32(even, _mm512_set1_epi32(1)) : even, hi);
 }
 
-// jitterInSubCell<Arity> (blue_noise.h) of 16 lanes followed by the float conversion of pointIndependent. With
-// L = log2 Q, s = ((o >> 8 axis) + c) << (32 - L) holds (c + o) mod Q in its top L bits without a mask (the left
-// shift drops the rest; the right one clears the bit below, which 2 s moves up); the tent is then 2 s xor (all ones
-// if s's top bit is set) in those L bits, because 2 (Q - 1 - c) + 1 = (Q - 1) xor (2 c mod Q) for c >= Q / 2.
+// pointIndependent's value of a jitter word moved into its sub-cell: (word >> 8), exact as a float (< 2^24),
+// times 2^-24.
 template <uint32_t Arity>
 STIPPLE_KERNEL __m512 subCellValue(uint32_t lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
-    constexpr uint32_t L = Arity == 1 ? 12 : 6;
-    const __m512i o = axis ? _mm512_srli_epi32(offsets, 8 * axis) : offsets;
-    const __m512i s =
-        _mm512_add_epi32(_mm512_slli_epi32(o, 32 - L), _mm512_set1_epi32(int(lattice << (32 - L))));
-    const __m512i tent = _mm512_ternarylogic_epi32(_mm512_slli_epi32(s, 1), _mm512_srai_epi32(s, 31),
-                                                   _mm512_set1_epi32(int(~0u << (32 - L))), 0x28); // (a ^ b) & c
-    // (tent | jitter >> L) >> 8, exact as a float (< 2^24), times 2^-24.
-    const __m512i bits = _mm512_or_si512(_mm512_srli_epi32(tent, 8), _mm512_srli_epi32(jitter, L + 8));
-    return _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f));
+    const __m512i word = jitterInSubCellLanes<Arity>(lattice, offsets, axis, jitter);
+    return _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(word, 8)), _mm512_set1_ps(0x1p-24f));
 }
 
 template <uint32_t Arity>

@@ -3,6 +3,7 @@
 // stratified_avx512.cpp — the progressive stratified batch (pattern_stratified.cpp, progressiveChunks) with AVX-512
 // and GFNI intrinsics, 16 points per step: the same values, computed as progressivePoint does (simd_avx512.h).
 #include "batch_isa.h"
+#include "blue_noise_avx512.h"
 #include "hash.h"
 #include "hash_avx512.h"
 #include "progressive_strata.h"
@@ -147,19 +148,6 @@ STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
     return _mm512_permutex2var_epi32(half[0], even, half[1]);
 }
 
-// jitterInSubCell (blue_noise.h) of 16 lanes: the sub-cell tent((c + o) mod Q), Q = 2^L, with the tent as
-// (2c xor -(c >= Q/2)) mod Q, in the top L bits; the jitter below.
-template <uint32_t Arity>
-STIPPLE_KERNEL __m512i jitterInSubCell(uint32_t lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
-    constexpr uint32_t L = Arity == 1 ? 12 : 6, Q = 1u << L;
-    const __m512i qMask = _mm512_set1_epi32(int(Q - 1));
-    const __m512i o = axis ? _mm512_srli_epi32(offsets, 8 * axis) : offsets; // axis < 3
-    const __m512i c = _mm512_and_si512(_mm512_add_epi32(o, _mm512_set1_epi32(int(lattice))), qMask);
-    const __m512i flip = _mm512_sub_epi32(_mm512_setzero_si512(), _mm512_srli_epi32(c, L - 1));
-    const __m512i t = _mm512_and_si512(_mm512_xor_si512(_mm512_slli_epi32(c, 1), flip), qMask);
-    return _mm512_or_si512(_mm512_slli_epi32(t, 32 - L), _mm512_srli_epi32(jitter, L));
-}
-
 // With the flag, the first pass of a chunk of blocks leaves each block's cell bits (as top) and full jitter words
 // per axis here; the second moves the jitters into the pixel's sub-cells of the points' strata. Two passes, so
 // that the strata's 64-bit offset hashes do not lengthen one block's chain of latencies beyond what the core
@@ -184,7 +172,7 @@ STIPPLE_KERNEL void blueSubCells(const BlueStage<Arity>& stage, uint32_t blocks,
         __m512 axis[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
             axis[c] = valueOf(stage.top[b][c], topMask[c],
-                              jitterInSubCell<Arity>(blue.lattice[c], offsets, c, stage.jitter[b][c]), jitterShift[c]);
+                              jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, stage.jitter[b][c]), jitterShift[c]);
         const uint32_t left = points - 16 * b;
         storeInterleaved<Arity>(out + size_t(16 * b) * Arity, axis, (left < 16 ? left : 16) * Arity);
     }
