@@ -66,7 +66,9 @@ private:
     void fill(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
     void point(const SetRef& set, const Dimension& dim, uint32_t p, float* out) const;
     // The blue-noise flag's variants of fill (blue_noise.h); off the flagless path.
-    void fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
+    // pixel: the set's plain key (block included), which keys each pixel's own part.
+    void fillBlueNoise(const SetRef& set, const SetKey& pixel, const Dimension& dim, uint32_t first, uint32_t count,
+                       float* out) const;
 
     uint32_t pattern_;
     const PatternOps& ops_;
