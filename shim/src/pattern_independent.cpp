@@ -121,15 +121,10 @@ void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t c
     fillIndependent<Isa>(set.key, dim, first, count, out);
 }
 
-// The registry keeps one blue-noise fill per pattern: it picks the ISA variant per call (one relaxed load).
-void blueFillForIsa(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                    const CrossPixelStrata& strata) {
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: return fillIndependent<BatchIsa::Avx512>(key, dim, first, count, out, &strata);
-    case BatchIsa::Avx2: return fillIndependent<BatchIsa::Avx2>(key, dim, first, count, out, &strata);
-    case BatchIsa::Baseline: break;
-    }
-    fillIndependent<BatchIsa::Baseline>(key, dim, first, count, out, &strata);
+template <BatchIsa Isa>
+void blueFillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                 const CrossPixelStrata& strata) {
+    fillIndependent<Isa>(set.key, dim, first, count, out, &strata);
 }
 } // namespace
 
@@ -147,8 +142,7 @@ constinit const PatternOps kIndependentPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointIndependent(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                     const CrossPixelStrata& strata) { blueFillForIsa(set.key, dim, first, count, out, strata); },
+    .fillStrata = {blueFillSet<BatchIsa::Baseline>, blueFillSet<BatchIsa::Avx2>, blueFillSet<BatchIsa::Avx512>},
 };
 
 } // namespace stipple::detail

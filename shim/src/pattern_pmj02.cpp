@@ -325,7 +325,7 @@ constinit const PatternOps kPmj02Pattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPmj02(set.key, set.block, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 } // namespace stipple::detail

@@ -55,6 +55,7 @@ Dimension makePatternDimension(const PatternOps& ops, uint32_t arity, uint32_t c
 Sampler::Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions,
                  uint32_t flags)
     : pattern_(pattern), ops_(*findPattern(pattern)), fill_(ops_.fill[static_cast<uint32_t>(batchIsa())]),
+      fillStrata_(ops_.fillStrata[static_cast<uint32_t>(batchIsa())]),
       samplesPerPixel_(samplesPerPixel), seed_(seed), seedKey_(seedKey(seed, ops_.domain)),
       dimensions_(std::move(dimensions)), flags_(flags), tileSeedKey_(seedKey(seed, tileDomain(ops_.domain))) {
     for (uint32_t a = 1; a <= 3; ++a) {
@@ -106,7 +107,7 @@ void Sampler::fillBlueNoise(const SetRef& set, const SetKey& pixel, const Dimens
     switch (ops_.blueNoise) {
     case BlueNoiseMode::CrossPixelStrata: {
         const CrossPixelStrata strata(memo.key, set.pixelX, set.pixelY, dim.arity, ops_.latticeUse);
-        return ops_.fillStrata(pixel, dim, first, count, out, strata);
+        return fillStrata_(pixel, dim, first, count, out, strata);
     }
     case BlueNoiseMode::Unsupported: break; // refused at creation (sampler_create.cpp)
     }
