@@ -34,7 +34,7 @@ STIPPLE_KERNEL __m512 subCellValue(uint32_t lattice, __m512i offsets, uint32_t a
 }
 
 template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void blueIndependent(uint64_t key, const BlueSubCellArgs& blue, uint32_t first,
+[[STIPPLE_TARGET_AVX512]] void blueIndependent(uint64_t key, const CrossPixelStrata& blue, uint32_t first,
                                                uint32_t count, float* out) {
     const __m512i golden = _mm512_set1_epi64(int64_t(kGolden64));
     const __m512i lanes = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
@@ -51,7 +51,7 @@ template <uint32_t Arity>
     }
     const __m512i valueStep = _mm512_set1_epi64(int64_t(16 * Arity * kGolden64));
     const __m512i offsetStep = _mm512_set1_epi64(int64_t(16 * kGolden64));
-    const __m512i valueKey = _mm512_set1_epi64(int64_t(key)), offsetKey = _mm512_set1_epi64(int64_t(blue.offsetKey));
+    const __m512i valueKey = _mm512_set1_epi64(int64_t(key)), offsetKey = _mm512_set1_epi64(int64_t(blue.offsetKey()));
     for (uint32_t base = 0; base < count; base += 16) {
         // 1D: the value's counter is the offsets' (p + 1), so the offsets reuse it.
         const __m512i offsets = dwordsOf(hashAtScaled(offsetKey, Arity == 1 ? valueCounter[0][0] : offsetCounter[0]),
@@ -60,7 +60,7 @@ template <uint32_t Arity>
         for (uint32_t c = 0; c < Arity; ++c) {
             const __m512i jitter = dwordsOf(hashAtScaled(valueKey, valueCounter[0][c]),
                                             hashAtScaled(valueKey, valueCounter[1][c]), 1);
-            axis[c] = subCellValue<Arity>(blue.lattice[c], offsets, c, jitter);
+            axis[c] = subCellValue<Arity>(blue.lattice.c[c], offsets, c, jitter);
             for (uint32_t h = 0; h < 2; ++h) valueCounter[h][c] = _mm512_add_epi64(valueCounter[h][c], valueStep);
         }
         if constexpr (Arity > 1)
@@ -72,7 +72,7 @@ template <uint32_t Arity>
 
 } // namespace
 
-void independentBlueAvx512(uint64_t key, const BlueSubCellArgs& blue, uint32_t arity, uint32_t first, uint32_t count,
+void independentBlueAvx512(uint64_t key, const CrossPixelStrata& blue, uint32_t arity, uint32_t first, uint32_t count,
                            float* out) {
     switch (arity) {
     case 1: return blueIndependent<1>(key, blue, first, count, out);

@@ -80,8 +80,7 @@ template <uint32_t Arity>
 // AVX-512: hand-written (independent_avx512.cpp).
 template <uint32_t Arity>
 void blueFloatsAvx512(uint64_t key, uint32_t first, uint32_t count, float* out, const CrossPixelStrata& blue) {
-    const BlueSubCellArgs subCells{blue.offsetKey(), {blue.lattice.c[0], blue.lattice.c[1], blue.lattice.c[2]}};
-    independentBlueAvx512(key, subCells, Arity, first, count, out);
+    independentBlueAvx512(key, blue, Arity, first, count, out);
 }
 #endif
 

@@ -275,8 +275,7 @@ void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uin
                                      set.jitterSeed,
                                      grid.pointBits,
                                      {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
-    const BlueSubCellArgs subCells{blue->offsetKey(), {blue->lattice.c[0], blue->lattice.c[1], blue->lattice.c[2]}};
-    progressiveBlueAvx512(args, subCells, Arity, first, count, out);
+    progressiveBlueAvx512(args, *blue, Arity, first, count, out);
 }
 #endif
 

@@ -162,24 +162,24 @@ struct BlueStage {
 // The second pass over blocks [0, blocks) of a chunk whose first point is out's.
 template <uint32_t Arity>
 STIPPLE_KERNEL void blueSubCells(const BlueStage<Arity>& stage, uint32_t blocks, uint32_t points,
-                                 const BlueSubCellArgs& blue, const __m512i* topMask, const __m128i* cellShift,
+                                 const CrossPixelStrata& blue, const __m512i* topMask, const __m128i* cellShift,
                                  const __m128i* jitterShift, float* out) {
     for (uint32_t b = 0; b < blocks; ++b) {
         __m512i cell[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
             cell[c] = _mm512_srl_epi32(_mm512_and_si512(stage.top[b][c], topMask[c]), cellShift[c]);
-        const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey);
+        const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey());
         __m512 axis[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
             axis[c] = valueOf(stage.top[b][c], topMask[c],
-                              jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, stage.jitter[b][c]), jitterShift[c]);
+                              jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, stage.jitter[b][c]), jitterShift[c]);
         const uint32_t left = points - 16 * b;
         storeInterleaved<Arity>(out + size_t(16 * b) * Arity, axis, (left < 16 ? left : 16) * Arity);
     }
 }
 
 template <uint32_t Arity, bool Blue>
-[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, const BlueSubCellArgs* blue, uint32_t first,
+[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, const CrossPixelStrata* blue, uint32_t first,
                                            uint32_t count, float* out) {
     const uint32_t bits = a.pointBits;
     const __m512i mask = _mm512_set1_epi32(int((1u << bits) - 1u));
@@ -296,7 +296,7 @@ void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32
     }
 }
 
-void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const BlueSubCellArgs& blue, uint32_t arity,
+void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const CrossPixelStrata& blue, uint32_t arity,
                            uint32_t first, uint32_t count, float* out) {
     switch (arity) {
     case 1: return progressive<1, true>(args, &blue, first, count, out);
