@@ -16,7 +16,7 @@ namespace stipple::detail {
 // bit is set) in those L bits, because 2 (Q - 1 - c) + 1 = (Q - 1) xor (2 c mod Q) for c >= Q / 2.
 template <uint32_t Arity>
 [[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline __m512i jitterInSubCellLanes(uint32_t lattice, __m512i offsets,
-                                                                                 uint32_t axis, __m512i jitter) {
+                                                                                  uint32_t axis, __m512i jitter) {
     constexpr uint32_t L = Arity == 1 ? 12 : 6;
     const __m512i o = axis ? _mm512_srli_epi32(offsets, 8 * axis) : offsets;
     const __m512i s = _mm512_add_epi32(_mm512_slli_epi32(o, 32 - L), _mm512_set1_epi32(int(lattice << (32 - L))));

@@ -43,10 +43,10 @@ template <uint32_t Arity>
     for (uint32_t h = 0; h < 2; ++h) {
         const uint64_t p0 = uint64_t(first) + 8 * h;
         for (uint32_t c = 0; c < Arity; ++c)
-            valueCounter[h][c] = _mm512_mullo_epi64(
-                _mm512_add_epi64(_mm512_set1_epi64(int64_t(p0 * Arity + c + 1)),
-                                 _mm512_mullo_epi64(lanes, _mm512_set1_epi64(Arity))),
-                golden);
+            valueCounter[h][c] =
+                _mm512_mullo_epi64(_mm512_add_epi64(_mm512_set1_epi64(int64_t(p0 * Arity + c + 1)),
+                                                    _mm512_mullo_epi64(lanes, _mm512_set1_epi64(Arity))),
+                                   golden);
         offsetCounter[h] = _mm512_mullo_epi64(_mm512_add_epi64(_mm512_set1_epi64(int64_t(p0 + 1)), lanes), golden);
     }
     const __m512i valueStep = _mm512_set1_epi64(int64_t(16 * Arity * kGolden64));
@@ -54,12 +54,13 @@ template <uint32_t Arity>
     const __m512i valueKey = _mm512_set1_epi64(int64_t(key)), offsetKey = _mm512_set1_epi64(int64_t(blue.offsetKey()));
     for (uint32_t base = 0; base < count; base += 16) {
         // 1D: the value's counter is the offsets' (p + 1), so the offsets reuse it.
-        const __m512i offsets = dwordsOf(hashAtScaled(offsetKey, Arity == 1 ? valueCounter[0][0] : offsetCounter[0]),
-                                         hashAtScaled(offsetKey, Arity == 1 ? valueCounter[1][0] : offsetCounter[1]), 0);
+        const __m512i offsets =
+            dwordsOf(hashAtScaled(offsetKey, Arity == 1 ? valueCounter[0][0] : offsetCounter[0]),
+                     hashAtScaled(offsetKey, Arity == 1 ? valueCounter[1][0] : offsetCounter[1]), 0);
         __m512 axis[Arity];
         for (uint32_t c = 0; c < Arity; ++c) {
-            const __m512i jitter = dwordsOf(hashAtScaled(valueKey, valueCounter[0][c]),
-                                            hashAtScaled(valueKey, valueCounter[1][c]), 1);
+            const __m512i jitter =
+                dwordsOf(hashAtScaled(valueKey, valueCounter[0][c]), hashAtScaled(valueKey, valueCounter[1][c]), 1);
             axis[c] = subCellValue<Arity>(blue.lattice.c[c], offsets, c, jitter);
             for (uint32_t h = 0; h < 2; ++h) valueCounter[h][c] = _mm512_add_epi64(valueCounter[h][c], valueStep);
         }

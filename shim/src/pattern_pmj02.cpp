@@ -106,7 +106,8 @@ template <uint32_t Arity>
         if constexpr (Arity >= 2)
             for (uint32_t i = 0; i < n; ++i) b[i] = table[2 * size_t(index[i]) + 1];
         float* o = out + size_t(base) * Arity;
-        for (uint32_t i = 0; i < n; ++i) o[size_t(i) * Arity] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[0]));
+        for (uint32_t i = 0; i < n; ++i)
+            o[size_t(i) * Arity] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[0]));
         if constexpr (Arity >= 2)
             for (uint32_t i = 0; i < n; ++i)
                 o[size_t(i) * Arity + 1] = fixedToUnitFloat(reversedScramble(b[i], set.scramble[1]));
@@ -177,18 +178,18 @@ STIPPLE_PMJ02_KERNEL __m512i loadLanes(const uint32_t (&lanes)[16]) { return _mm
 STIPPLE_PMJ02_KERNEL __m512i blockIndex(uint32_t blockFirst, uint32_t seed) {
     if (blockFirst == 0) {
         const __m512i octave = loadLanes(kFirstBlock.octave);
-        const __m512i inOctave = reverse32(laineKarras(loadLanes(kFirstBlock.reversed),
-                                                       _mm512_xor_si512(_mm512_set1_epi32(int(seed)), octave)));
+        const __m512i inOctave = reverse32(
+            laineKarras(loadLanes(kFirstBlock.reversed), _mm512_xor_si512(_mm512_set1_epi32(int(seed)), octave)));
         return _mm512_ternarylogic_epi32(loadLanes(kFirstBlock.head), inOctave, loadLanes(kFirstBlock.low),
                                          0xf8); // a | (b & c)
     }
     if (blockFirst >= 16 && blockFirst % 16 == 0) {
         // An aligned block lies in one octave (>= 16), and the reversal of blockFirst - octave + lane is that of
         // blockFirst - octave (a multiple of 16) with the lane's bits on top.
-        const __m512i reversedLanes = _mm512_setr_epi32(
-            0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u), 0x60000000,
-            int(0xe0000000u), 0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u), 0x30000000,
-            int(0xb0000000u), 0x70000000, int(0xf0000000u));
+        const __m512i reversedLanes =
+            _mm512_setr_epi32(0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u),
+                              0x60000000, int(0xe0000000u), 0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u),
+                              0x30000000, int(0xb0000000u), 0x70000000, int(0xf0000000u));
         const uint32_t octave = std::bit_floor(blockFirst);
         const __m512i reversed =
             _mm512_or_si512(_mm512_set1_epi32(int(reverseBits32(blockFirst - octave))), reversedLanes);
@@ -196,9 +197,8 @@ STIPPLE_PMJ02_KERNEL __m512i blockIndex(uint32_t blockFirst, uint32_t seed) {
         return _mm512_ternarylogic_epi32(_mm512_set1_epi32(int(octave)), inOctave, _mm512_set1_epi32(int(octave - 1)),
                                          0xf8);
     }
-    const __m512i t =
-        _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
-                                                                               12, 13, 14, 15));
+    const __m512i t = _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)),
+                                       _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
     // octaveShuffle: octave 0x80000000 >> clz(t) (0 for t < 2), the order inside it scrambled.
     const __mmask16 small = _mm512_cmplt_epu32_mask(t, _mm512_set1_epi32(2));
     const __m512i octave =
@@ -247,8 +247,8 @@ STIPPLE_PMJ02_KERNEL void storeBlock(const Pmj02Set& set, __m512i index, uint32_
         const __m512i pair = _mm512_slli_epi32(index, 1);
         axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
         if constexpr (Arity >= 2)
-            axis[1] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4),
-                                scramble[1]);
+            axis[1] =
+                unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4), scramble[1]);
         if constexpr (Arity == 3)
             axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
                                                             reinterpret_cast<const int*>(set.z), 4),

@@ -55,9 +55,9 @@ Dimension makePatternDimension(const PatternOps& ops, uint32_t arity, uint32_t c
 Sampler::Sampler(uint32_t pattern, uint32_t samplesPerPixel, uint64_t seed, std::vector<Dimension> dimensions,
                  uint32_t flags)
     : pattern_(pattern), ops_(*findPattern(pattern)), fill_(ops_.fill[static_cast<uint32_t>(batchIsa())]),
-      fillStrata_(ops_.fillStrata[static_cast<uint32_t>(batchIsa())]),
-      samplesPerPixel_(samplesPerPixel), seed_(seed), seedKey_(seedKey(seed, ops_.domain)),
-      dimensions_(std::move(dimensions)), flags_(flags), tileSeedKey_(seedKey(seed, tileDomain(ops_.domain))) {
+      fillStrata_(ops_.fillStrata[static_cast<uint32_t>(batchIsa())]), samplesPerPixel_(samplesPerPixel), seed_(seed),
+      seedKey_(seedKey(seed, ops_.domain)), dimensions_(std::move(dimensions)), flags_(flags),
+      tileSeedKey_(seedKey(seed, tileDomain(ops_.domain))) {
     for (uint32_t a = 1; a <= 3; ++a) {
         streams_[a - 1] = plainDimension(a, 1, samplesPerPixel);
         if (ops_.prepare && !ops_.prepareStreamsOnFirstUse) ops_.prepare(streams_[a - 1]);

@@ -72,7 +72,7 @@ private:
 
     uint32_t pattern_;
     const PatternOps& ops_;
-    PatternFill fill_; // ops_.fill for the batch ISA at creation
+    PatternFill fill_;             // ops_.fill for the batch ISA at creation
     PatternStrataFill fillStrata_; // ops_.fillStrata likewise
     uint32_t samplesPerPixel_;
     uint64_t seed_;

@@ -59,9 +59,7 @@ constexpr int64_t bitMatrix(const int (&from)[8]) {
     return int64_t(m);
 }
 // Bytes of every dword reversed (reverse32's shuffle).
-STIPPLE_KERNEL __m512i reverseBytes(__m512i v) {
-    return _mm512_shuffle_epi8(v, dwordByteReversal());
-}
+STIPPLE_KERNEL __m512i reverseBytes(__m512i v) { return _mm512_shuffle_epi8(v, dwordByteReversal()); }
 
 // 2D cells of q, as cell[c] << (24 - axisBits[c]) before masking: axis 0 has q's even bits, axis 1 its odd bits,
 // each read from bit 0 as the cell's most significant bit (progressiveCell). With q's bytes reversed in every dword,
@@ -159,22 +157,32 @@ struct BlueStage {
     __m512i jitter[kBlueChunkBlocks][Arity];
 };
 
-// The second pass over blocks [0, blocks) of a chunk whose first point is out's.
+// One block of the second pass: `floats` values from out.
 template <uint32_t Arity>
-STIPPLE_KERNEL void blueSubCells(const BlueStage<Arity>& stage, uint32_t blocks, uint32_t points,
-                                 const CrossPixelStrata& blue, const __m512i* topMask, const __m128i* cellShift,
-                                 const __m128i* jitterShift, float* out) {
-    for (uint32_t b = 0; b < blocks; ++b) {
-        __m512i cell[Arity];
-        for (uint32_t c = 0; c < Arity; ++c)
-            cell[c] = _mm512_srl_epi32(_mm512_and_si512(stage.top[b][c], topMask[c]), cellShift[c]);
-        const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey());
-        __m512 axis[Arity];
-        for (uint32_t c = 0; c < Arity; ++c)
-            axis[c] = valueOf(stage.top[b][c], topMask[c],
-                              jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, stage.jitter[b][c]), jitterShift[c]);
-        const uint32_t left = points - 16 * b;
-        storeInterleaved<Arity>(out + size_t(16 * b) * Arity, axis, (left < 16 ? left : 16) * Arity);
+STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, const CrossPixelStrata& blue,
+                              const __m512i* topMask, const __m128i* cellShift, const __m128i* jitterShift, float* out,
+                              uint32_t floats) {
+    __m512i cell[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
+    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey());
+    __m512 axis[Arity];
+    for (uint32_t c = 0; c < Arity; ++c)
+        axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, jitter[c]),
+                          jitterShift[c]);
+    storeInterleaved<Arity>(out, axis, floats);
+}
+
+// With the flag, a block's cell bits and jitter words: staged for the second pass, or, in a one-block call (nothing
+// to overlap), finished at once.
+template <uint32_t Arity>
+STIPPLE_KERNEL void blueBlockOrStage(BlueStage<Arity>& stage, uint32_t block, bool oneBlock, const __m512i* top,
+                                     const __m512i* jitter, const CrossPixelStrata& blue, const __m512i* topMask,
+                                     const __m128i* cellShift, const __m128i* jitterShift, float* out,
+                                     uint32_t floats) {
+    if (oneBlock) return blueBlock<Arity>(top, jitter, blue, topMask, cellShift, jitterShift, out, floats);
+    for (uint32_t c = 0; c < Arity; ++c) {
+        stage.top[block][c] = top[c];
+        stage.jitter[block][c] = jitter[c];
     }
 }
 
@@ -204,85 +212,98 @@ template <uint32_t Arity, bool Blue>
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     alignas(64) BlueStage<Arity> stage;
     for (uint32_t chunk = 0; chunk < count; chunk += kBlueChunkBlocks * 16) {
-      const uint32_t chunkEnd = count - chunk < kBlueChunkBlocks * 16 ? count : chunk + kBlueChunkBlocks * 16;
-      for (uint32_t base = chunk; base < chunkEnd; base += 16) {
-        const uint32_t blockFirst = first + base;
-        const uint32_t block = (base - chunk) / 16;
-        // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
-        // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
-        const __m512i reversed =
-            blockFirst == 0 && bits >= 4 ? reversedLanes
-            : blockFirst % 16 == 0 && bits >= 4
-                ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
-                : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
-        const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, orderSeed)), unused);
-        const __m512i scrambled = laineKarras(shuffled, valueSeed);
-        const __m512i q = _mm512_and_si512(scrambled, mask);
-        const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
-        float* o = out + size_t(base) * Arity;
-        if constexpr (Arity == 1) {
-            // The jitter word is the unmasked scramble (progressivePoint).
-            // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
-            const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
-            const __m512i top = _mm512_shuffle_epi8(
-                bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
-            if constexpr (Blue) {
-                stage.top[block][0] = top;
-                stage.jitter[block][0] = scrambled;
-            } else {
-                storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
-            }
-        } else {
-            // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled index
-            // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
-            const __m512i t = _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
-                                                        _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))),
-                                                        0x96);
-            __m512 v[Arity];
-            if constexpr (Arity == 2) {
-                __m512i top0, top1;
-                cells2D(q, top0, top1);
+        const uint32_t chunkEnd = count - chunk < kBlueChunkBlocks * 16 ? count : chunk + kBlueChunkBlocks * 16;
+        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+            const uint32_t blockFirst = first + base;
+            const uint32_t block = (base - chunk) / 16;
+            // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
+            // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
+            const __m512i reversed =
+                blockFirst == 0 && bits >= 4 ? reversedLanes
+                : blockFirst % 16 == 0 && bits >= 4
+                    ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
+                    : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
+            const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, orderSeed)), unused);
+            const __m512i scrambled = laineKarras(shuffled, valueSeed);
+            const __m512i q = _mm512_and_si512(scrambled, mask);
+            const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
+            float* o = out + size_t(base) * Arity;
+            if constexpr (Arity == 1) {
+                // The jitter word is the unmasked scramble (progressivePoint).
+                // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
+                const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
+                const __m512i top = _mm512_shuffle_epi8(
+                    bytes,
+                    _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
                 if constexpr (Blue) {
-                    const __m512i top[2] = {top0, top1};
-                    for (uint32_t c = 0; c < 2; ++c) {
-                        const __m512i x = axisJitterHead(t, c);
-                        stage.top[block][c] = top[c];
-                        stage.jitter[block][c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
-                    }
-                    continue;
+                    blueBlockOrStage<1>(stage, block, count <= 16, &top, &scrambled, *blue, topMask, cellShift,
+                                        jitterShift, o, floats);
+                } else {
+                    storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
                 }
-                const __m512 x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
-                const __m512 y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
-                const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
-                v[0] = _mm512_permutex2var_ps(x, lo, y);
-                v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
             } else {
-                __m512i top[3];
-                cells3D(q, top);
-                if constexpr (Blue) {
-                    for (uint32_t c = 0; c < 3; ++c) {
-                        const __m512i x = axisJitterHead(t, c);
-                        stage.top[block][c] = top[c];
-                        stage.jitter[block][c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled
+                // index
+                // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
+                const __m512i t =
+                    _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
+                                              _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))), 0x96);
+                __m512 v[Arity];
+                if constexpr (Arity == 2) {
+                    __m512i top0, top1;
+                    cells2D(q, top0, top1);
+                    if constexpr (Blue) {
+                        const __m512i top[2] = {top0, top1};
+                        __m512i jitter[2];
+                        for (uint32_t c = 0; c < 2; ++c) {
+                            const __m512i x = axisJitterHead(t, c);
+                            jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                        }
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
+                                                jitterShift, o, floats);
+                        continue;
                     }
-                    continue;
+                    const __m512 x =
+                        valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
+                    const __m512 y =
+                        valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                    const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
+                    v[0] = _mm512_permutex2var_ps(x, lo, y);
+                    v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
+                } else {
+                    __m512i top[3];
+                    cells3D(q, top);
+                    if constexpr (Blue) {
+                        __m512i jitter[3];
+                        for (uint32_t c = 0; c < 3; ++c) {
+                            const __m512i x = axisJitterHead(t, c);
+                            jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                        }
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
+                                                jitterShift, o, floats);
+                        continue;
+                    }
+                    __m512 axis[3];
+                    for (uint32_t c = 0; c < 3; ++c)
+                        axis[c] =
+                            valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
+                    // Interleave x, y, z.
+                    for (uint32_t w = 0; w < 3; ++w) {
+                        const __m512 xy =
+                            _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
+                        v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
+                    }
                 }
-                __m512 axis[3];
-                for (uint32_t c = 0; c < 3; ++c)
-                    axis[c] = valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
-                // Interleave x, y, z.
-                for (uint32_t w = 0; w < 3; ++w) {
-                    const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
-                    v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
-                }
+                for (uint32_t w = 0; w < Arity; ++w)
+                    if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
             }
-            for (uint32_t w = 0; w < Arity; ++w)
-                if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
         }
-      }
-      if constexpr (Blue)
-          blueSubCells<Arity>(stage, (chunkEnd - chunk + 15) / 16, chunkEnd - chunk, *blue, topMask, cellShift,
-                              jitterShift, out + size_t(chunk) * Arity);
+        if constexpr (Blue)
+            if (count > 16)
+                for (uint32_t base = chunk; base < chunkEnd; base += 16)
+                    blueBlock<Arity>(stage.top[(base - chunk) / 16], stage.jitter[(base - chunk) / 16], *blue, topMask,
+                                     cellShift, jitterShift, out + size_t(base) * Arity,
+                                     (count - base < 16 ? count - base : 16) * Arity);
     }
 }
 
