@@ -159,7 +159,7 @@ constinit const PatternOps kHaltonPattern{
     .strata = nullptr,
     .point = pointHalton,
     .fill = {fillHalton, fillHalton, fillHalton},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 } // namespace stipple::detail

@@ -8,6 +8,7 @@
 #include "hash.h"
 #include "pattern_registry.h"
 #include "patterns.h"
+#include "simd_avx512.h"
 
 namespace stipple::detail {
 
@@ -76,10 +77,10 @@ template <uint32_t Arity>
                                             const CrossPixelStrata& blue) {
     blueHashedFloats<Arity>(key, first, count, out, blue);
 }
+// AVX-512: hand-written (independent_avx512.cpp).
 template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void blueFloatsAvx512(uint64_t key, uint32_t first, uint32_t count, float* out,
-                                                const CrossPixelStrata& blue) {
-    blueHashedFloats<Arity>(key, first, count, out, blue);
+void blueFloatsAvx512(uint64_t key, uint32_t first, uint32_t count, float* out, const CrossPixelStrata& blue) {
+    independentBlueAvx512(key, blue, Arity, first, count, out);
 }
 #endif
 
@@ -119,15 +120,10 @@ void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t c
     fillIndependent<Isa>(set.key, dim, first, count, out);
 }
 
-// The registry keeps one blue-noise fill per pattern: it picks the ISA variant per call (one relaxed load).
-void blueFillForIsa(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                    const CrossPixelStrata& strata) {
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: return fillIndependent<BatchIsa::Avx512>(key, dim, first, count, out, &strata);
-    case BatchIsa::Avx2: return fillIndependent<BatchIsa::Avx2>(key, dim, first, count, out, &strata);
-    case BatchIsa::Baseline: break;
-    }
-    fillIndependent<BatchIsa::Baseline>(key, dim, first, count, out, &strata);
+template <BatchIsa Isa>
+void blueFillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                 const CrossPixelStrata& strata) {
+    fillIndependent<Isa>(set.key, dim, first, count, out, &strata);
 }
 } // namespace
 
@@ -145,8 +141,7 @@ constinit const PatternOps kIndependentPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointIndependent(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                     const CrossPixelStrata& strata) { blueFillForIsa(set.key, dim, first, count, out, strata); },
+    .fillStrata = {blueFillSet<BatchIsa::Baseline>, blueFillSet<BatchIsa::Avx2>, blueFillSet<BatchIsa::Avx512>},
 };
 
 } // namespace stipple::detail

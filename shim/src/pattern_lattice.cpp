@@ -115,7 +115,7 @@ constinit const PatternOps kLatticePattern{
     .strata = nullptr,
     .point = pointLattice,
     .fill = {fillLattice<BatchIsa::Baseline>, fillLattice<BatchIsa::Avx2>, fillLattice<BatchIsa::Avx512>},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 } // namespace stipple::detail

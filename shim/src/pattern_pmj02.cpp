@@ -39,15 +39,27 @@ struct Pmj02Set {
     uint32_t indexSeed;
     uint32_t scramble[3];
     uint32_t offset; // sequence index of the block's first point
+    uint32_t length; // points in the sequence
 
     Pmj02Set(uint64_t key, uint32_t block, const Dimension& dim) {
         const Pmj02Family& family = *dim.pmj02;
-        const uint32_t blocksPerSequence = (1u << family.storedLog2Length()) / dim.setSize;
-        const uint32_t generation = block / blocksPerSequence;
-        offset = (block - generation * blocksPerSequence) * dim.setSize;
-        key = hashCombine(key, generation);
+        length = 1u << family.storedLog2Length();
+        // key = hashCombine(key, generation). Block 0 (every fill_pixel) is generation 0 at offset 0: no divisions,
+        // and the generation's own mix is a constant, off the call's chain of hashes.
+        constexpr uint64_t kFirstGeneration = mix64(0 + kGolden64);
+        uint64_t generationWord = kFirstGeneration;
+        offset = 0;
+        if (block != 0) {
+            const uint32_t blocksPerSequence = length / dim.setSize;
+            const uint32_t generation = block / blocksPerSequence;
+            offset = (block - generation * blocksPerSequence) * dim.setSize;
+            generationWord = mix64(generation + kGolden64);
+        }
+        key = mix64(key ^ generationWord);
         const uint64_t h0 = hashAt(key, 0), h1 = hashAt(key, 1), h2 = hashAt(key, 2);
-        const uint32_t sequence = static_cast<uint32_t>((h0 >> 32) % family.setCount());
+        // (h0 >> 32) mod setCount; a family's count is a power of two (setCountFor), a mask instead of a division.
+        const uint32_t draw = static_cast<uint32_t>(h0 >> 32), sets = family.setCount();
+        const uint32_t sequence = (sets & (sets - 1)) == 0 ? draw & (sets - 1) : draw % sets;
         xy = family.sequence(sequence);
         z = dim.arity == 3 ? family.depth(sequence) : nullptr;
         indexSeed = static_cast<uint32_t>(h1);
@@ -94,7 +106,8 @@ template <uint32_t Arity>
         if constexpr (Arity >= 2)
             for (uint32_t i = 0; i < n; ++i) b[i] = table[2 * size_t(index[i]) + 1];
         float* o = out + size_t(base) * Arity;
-        for (uint32_t i = 0; i < n; ++i) o[size_t(i) * Arity] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[0]));
+        for (uint32_t i = 0; i < n; ++i)
+            o[size_t(i) * Arity] = fixedToUnitFloat(reversedScramble(a[i], set.scramble[0]));
         if constexpr (Arity >= 2)
             for (uint32_t i = 0; i < n; ++i)
                 o[size_t(i) * Arity + 1] = fixedToUnitFloat(reversedScramble(b[i], set.scramble[1]));
@@ -142,101 +155,124 @@ STIPPLE_PMJ02_KERNEL __m512 unitValue(__m512i reversed, __m512i seed) {
     return _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(v, 8)), _mm512_set1_ps(0x1p-24f));
 }
 
-// Lane indices that interleave three 16-lane axes into 48 floats (float f is axis f % 3 of point f / 3).
-struct Pmj02Interleave3 {
-    alignas(64) int32_t xy[3][16];
-    alignas(64) int32_t z[3][16];
-    constexpr Pmj02Interleave3() : xy(), z() {
-        for (int w = 0; w < 3; ++w)
-            for (int l = 0; l < 16; ++l) {
-                const int f = 16 * w + l, point = f / 3, c = f % 3;
-                xy[w][l] = (c == 1 ? 16 : 0) + point;
-                z[w][l] = c == 2 ? 16 + point : l;
-            }
+// Block 0's lanes t = 0..15 in octaveShuffle's terms (constants: the first block is on every call's path).
+struct FirstBlock {
+    alignas(64) uint32_t head[16];     // t below 2, else its octave 2^floor(log2 t)
+    alignas(64) uint32_t octave[16];   // 0 below 2
+    alignas(64) uint32_t reversed[16]; // reverseBits32(t - octave)
+    alignas(64) uint32_t low[16];      // octave - 1, 0 below 2
+    constexpr FirstBlock() : head(), octave(), reversed(), low() {
+        for (uint32_t t = 0; t < 16; ++t) {
+            octave[t] = t < 2 ? 0u : std::bit_floor(t);
+            head[t] = t < 2 ? t : octave[t];
+            reversed[t] = reverseBits32(t - octave[t]);
+            low[t] = t < 2 ? 0u : octave[t] - 1u;
+        }
     }
 };
-inline constexpr Pmj02Interleave3 kPmj02Interleave3{};
+inline constexpr FirstBlock kFirstBlock{};
+
+STIPPLE_PMJ02_KERNEL __m512i loadLanes(const uint32_t (&lanes)[16]) { return _mm512_load_si512(lanes); }
+
+// octaveShuffle(blockFirst + lane, seed) of a block of 16 points.
+STIPPLE_PMJ02_KERNEL __m512i blockIndex(uint32_t blockFirst, uint32_t seed) {
+    if (blockFirst == 0) {
+        const __m512i octave = loadLanes(kFirstBlock.octave);
+        const __m512i inOctave = reverse32(
+            laineKarras(loadLanes(kFirstBlock.reversed), _mm512_xor_si512(_mm512_set1_epi32(int(seed)), octave)));
+        return _mm512_ternarylogic_epi32(loadLanes(kFirstBlock.head), inOctave, loadLanes(kFirstBlock.low),
+                                         0xf8); // a | (b & c)
+    }
+    if (blockFirst >= 16 && blockFirst % 16 == 0) {
+        // An aligned block lies in one octave (>= 16), and the reversal of blockFirst - octave + lane is that of
+        // blockFirst - octave (a multiple of 16) with the lane's bits on top.
+        const __m512i reversedLanes =
+            _mm512_setr_epi32(0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u),
+                              0x60000000, int(0xe0000000u), 0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u),
+                              0x30000000, int(0xb0000000u), 0x70000000, int(0xf0000000u));
+        const uint32_t octave = std::bit_floor(blockFirst);
+        const __m512i reversed =
+            _mm512_or_si512(_mm512_set1_epi32(int(reverseBits32(blockFirst - octave))), reversedLanes);
+        const __m512i inOctave = reverse32(laineKarras(reversed, _mm512_set1_epi32(int(seed ^ octave))));
+        return _mm512_ternarylogic_epi32(_mm512_set1_epi32(int(octave)), inOctave, _mm512_set1_epi32(int(octave - 1)),
+                                         0xf8);
+    }
+    const __m512i t = _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)),
+                                       _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+    // octaveShuffle: octave 0x80000000 >> clz(t) (0 for t < 2), the order inside it scrambled.
+    const __mmask16 small = _mm512_cmplt_epu32_mask(t, _mm512_set1_epi32(2));
+    const __m512i octave =
+        _mm512_maskz_srlv_epi32(__mmask16(~small), _mm512_set1_epi32(int(0x80000000u)), _mm512_lzcnt_epi32(t));
+    const __m512i low = _mm512_maskz_sub_epi32(__mmask16(~small), octave, _mm512_set1_epi32(1));
+    const __m512i inOctave = reverse32(
+        laineKarras(reverse32(_mm512_sub_epi32(t, octave)), _mm512_xor_si512(_mm512_set1_epi32(int(seed)), octave)));
+    return _mm512_ternarylogic_epi32(_mm512_mask_mov_epi32(octave, small, t), inOctave, low, 0xf8);
+}
+
+// The values of the block of 16 points from blockFirst whose table indices are `index`, stored interleaved.
+template <uint32_t Arity>
+STIPPLE_PMJ02_KERNEL void storeBlock(const Pmj02Set& set, __m512i index, uint32_t blockFirst, uint32_t points,
+                                     float* out) {
+    const int* table = reinterpret_cast<const int*>(set.xy);
+    __m512i scramble[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) scramble[c] = _mm512_set1_epi32(int(set.scramble[c]));
+    __m512 axis[Arity];
+    if (blockFirst % 16 == 0 && set.length >= 16) {
+        // An aligned block's 16 indices are the 16 of one aligned run of the table (the octave shuffle is an Owen
+        // scramble: bits 4 and up of i - octave fix those of its image; block 0's all lie below 16). So the run is
+        // loaded and scrambled in its own order, and a lane permute per axis puts the values in the block's: no
+        // gathers, and the value scramble does not wait for the index order (a short call's latency). The whole
+        // run exists even past a tail: the length is a multiple of 16.
+        const uint32_t run =
+            blockFirst == 0 ? 0u : static_cast<uint32_t>(_mm_cvtsi128_si32(_mm512_castsi512_si128(index))) & ~15u;
+        const __m512i lane = _mm512_and_si512(index, _mm512_set1_epi32(15));
+        const __m512i lo = _mm512_loadu_si512(table + 2 * size_t(run));
+        const __m512i hi = _mm512_loadu_si512(table + 2 * size_t(run) + 16);
+        if constexpr (Arity == 1) {
+            const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+            axis[0] = _mm512_permutexvar_ps(lane, unitValue(_mm512_permutex2var_epi32(lo, even, hi), scramble[0]));
+        } else {
+            // (x, y) pairs in run order, each scrambled with its axis' seed (x's in the even lanes), then picked
+            // per lane.
+            const __m512i pairScramble = _mm512_mask_mov_epi32(scramble[0], __mmask16(0xaaaa), scramble[1]);
+            const __m512 valuesLo = unitValue(lo, pairScramble), valuesHi = unitValue(hi, pairScramble);
+            const __m512i pair = _mm512_slli_epi32(lane, 1);
+            axis[0] = _mm512_permutex2var_ps(valuesLo, pair, valuesHi);
+            axis[1] = _mm512_permutex2var_ps(valuesLo, _mm512_add_epi32(pair, _mm512_set1_epi32(1)), valuesHi);
+        }
+        if constexpr (Arity == 3)
+            axis[2] = _mm512_permutexvar_ps(lane, unitValue(_mm512_loadu_si512(set.z + run), scramble[2]));
+    } else {
+        const __mmask16 live = __mmask16((1u << points) - 1u);
+        const __m512i pair = _mm512_slli_epi32(index, 1);
+        axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
+        if constexpr (Arity >= 2)
+            axis[1] =
+                unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4), scramble[1]);
+        if constexpr (Arity == 3)
+            axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
+                                                            reinterpret_cast<const int*>(set.z), 4),
+                                scramble[2]);
+    }
+    storeInterleaved<Arity>(out, axis, points * Arity);
+}
 
 template <uint32_t Arity>
 [[STIPPLE_TARGET_AVX512]] void pmj02BatchAvx512(const Pmj02Set& set, uint32_t first, uint32_t count, float* out) {
-    const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-    const __m512i one = _mm512_set1_epi32(1), two = _mm512_set1_epi32(2);
-    const __m512i indexSeed = _mm512_set1_epi32(int(set.indexSeed));
-    const __m512i reversedLanes = _mm512_setr_epi32(
-        0, int(0x80000000u), 0x40000000, int(0xc0000000u), 0x20000000, int(0xa0000000u), 0x60000000, int(0xe0000000u),
-        0x10000000, int(0x90000000u), 0x50000000, int(0xd0000000u), 0x30000000, int(0xb0000000u), 0x70000000,
-        int(0xf0000000u));
-    __m512i scramble[Arity];
-    for (uint32_t c = 0; c < Arity; ++c) scramble[c] = _mm512_set1_epi32(int(set.scramble[c]));
-    const int* table = reinterpret_cast<const int*>(set.xy);
-    // Two passes per chunk: the index order first (hashes only, independent across blocks), then the gathers and
-    // value scrambles, so that neither waits on the other's latency chain.
+    const uint32_t start = set.offset + first;
+    if (count <= 16) // one block: its index order straight into the table reads
+        return storeBlock<Arity>(set, blockIndex(start, set.indexSeed), start, count, out);
+    // Two passes per chunk: the index order first (hashes only, independent across blocks), then the table reads
+    // and value scrambles, so that neither waits on the other's latency chain.
     constexpr uint32_t kChunkBlocks = 16;
     alignas(64) uint32_t chunkIndex[kChunkBlocks * 16];
     for (uint32_t chunk = 0; chunk < count; chunk += kChunkBlocks * 16) {
         const uint32_t chunkEnd = count - chunk < kChunkBlocks * 16 ? count : chunk + kChunkBlocks * 16;
-        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
-            const uint32_t blockFirst = set.offset + first + base;
-            __m512i index;
-            if (blockFirst >= 16 && blockFirst % 16 == 0) {
-                // An aligned block lies in one octave (>= 16), and the reversal of blockFirst - octave + lane is
-                // that of blockFirst - octave (a multiple of 16) with the lane's bits on top.
-                const uint32_t octave = std::bit_floor(blockFirst);
-                const __m512i reversed = _mm512_or_si512(_mm512_set1_epi32(int(reverseBits32(blockFirst - octave))),
-                                                         reversedLanes);
-                const __m512i inOctave =
-                    reverse32(laineKarras(reversed, _mm512_set1_epi32(int(set.indexSeed ^ octave))));
-                index = _mm512_ternarylogic_epi32(_mm512_set1_epi32(int(octave)), inOctave,
-                                                  _mm512_set1_epi32(int(octave - 1)), 0xf8); // a | (b & c)
-            } else {
-                const __m512i t = _mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes);
-                // octaveShuffle: octave 0x80000000 >> clz(t) (0 for t < 2), the order inside it scrambled.
-                const __mmask16 small = _mm512_cmplt_epu32_mask(t, two);
-                const __m512i octave = _mm512_maskz_srlv_epi32(__mmask16(~small), _mm512_set1_epi32(int(0x80000000u)),
-                                                               _mm512_lzcnt_epi32(t));
-                const __m512i low = _mm512_maskz_sub_epi32(__mmask16(~small), octave, one);
-                const __m512i inOctave = reverse32(
-                    laineKarras(reverse32(_mm512_sub_epi32(t, octave)), _mm512_xor_si512(indexSeed, octave)));
-                index = _mm512_ternarylogic_epi32(_mm512_mask_mov_epi32(octave, small, t), inOctave, low,
-                                                  0xf8); // a | (b & c)
-            }
-            _mm512_store_si512(chunkIndex + (base - chunk), index);
-        }
-        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
-            const uint32_t points = count - base < 16 ? count - base : 16;
-            const __mmask16 live = __mmask16((1u << points) - 1u);
-            const __m512i index = _mm512_load_si512(chunkIndex + (base - chunk));
-            const __m512i pair = _mm512_slli_epi32(index, 1);
-            __m512 axis[Arity];
-            axis[0] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table, 4), scramble[0]);
-            if constexpr (Arity >= 2)
-                axis[1] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, pair, table + 1, 4),
-                                    scramble[1]);
-            if constexpr (Arity == 3)
-                axis[2] = unitValue(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, index,
-                                                                reinterpret_cast<const int*>(set.z), 4),
-                                    scramble[2]);
-            const uint32_t floats = points * Arity;
-            float* o = out + size_t(base) * Arity;
-            if constexpr (Arity == 1) {
-                storeFirst(o, axis[0], floats);
-            } else {
-                __m512 v[Arity];
-                if constexpr (Arity == 2) {
-                    const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
-                    v[0] = _mm512_permutex2var_ps(axis[0], lo, axis[1]);
-                    v[1] = _mm512_permutex2var_ps(axis[0], _mm512_add_epi32(lo, _mm512_set1_epi32(8)), axis[1]);
-                } else {
-                    for (uint32_t w = 0; w < 3; ++w) {
-                        const __m512 xy =
-                            _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kPmj02Interleave3.xy[w]), axis[1]);
-                        v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kPmj02Interleave3.z[w]), axis[2]);
-                    }
-                }
-                for (uint32_t w = 0; w < Arity; ++w)
-                    if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
-            }
-        }
+        for (uint32_t base = chunk; base < chunkEnd; base += 16)
+            _mm512_store_si512(chunkIndex + (base - chunk), blockIndex(start + base, set.indexSeed));
+        for (uint32_t base = chunk; base < chunkEnd; base += 16)
+            storeBlock<Arity>(set, _mm512_load_si512(chunkIndex + (base - chunk)), start + base,
+                              count - base < 16 ? count - base : 16, out + size_t(base) * Arity);
     }
 }
 #endif
@@ -289,7 +325,7 @@ constinit const PatternOps kPmj02Pattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPmj02(set.key, set.block, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 } // namespace stipple::detail

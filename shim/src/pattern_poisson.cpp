@@ -329,7 +329,7 @@ constinit const PatternOps kPoissonPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPoisson(set.key, dim, p, out); },
     .fill = {fillPoissonSet<BatchIsa::Baseline>, fillPoissonSet<BatchIsa::Avx2>, fillPoissonSet<BatchIsa::Avx512>},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 // Generated afresh on every call: nothing to prepare, nothing per ISA.
@@ -347,7 +347,7 @@ constinit const PatternOps kPoissonSeedPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPoissonSeed(set.key, dim, p, out); },
     .fill = {fillPoissonSeedSet, fillPoissonSeedSet, fillPoissonSeedSet},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 } // namespace stipple::detail

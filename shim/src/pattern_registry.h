@@ -78,7 +78,7 @@ struct PatternOps {
     PatternPoint point;
     // Points [first, first + count) of the block, one variant per BatchIsa (the same bits in each).
     PatternFill fill[kBatchIsaCount];
-    PatternStrataFill fillStrata; // CrossPixelStrata only
+    PatternStrataFill fillStrata[kBatchIsaCount]; // CrossPixelStrata only, per BatchIsa like fill
 };
 
 // The key of block `block` of a set keyed `key` (BlockKeying).

@@ -154,7 +154,7 @@ constinit const PatternOps kSobolPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointSobol(SobolSet::perPixel(set.key).atBlock(set.block), dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = nullptr,
+    .fillStrata = {},
 };
 
 } // namespace stipple::detail

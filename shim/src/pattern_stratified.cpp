@@ -275,8 +275,7 @@ void progressiveBlueAvx512(const StratifiedSet& set, const StrataGrid& grid, uin
                                      set.jitterSeed,
                                      grid.pointBits,
                                      {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
-    const BlueSubCellArgs subCells{blue->offsetKey(), {blue->lattice.c[0], blue->lattice.c[1], blue->lattice.c[2]}};
-    progressiveBlueAvx512(args, subCells, Arity, first, count, out);
+    progressiveBlueAvx512(args, *blue, Arity, first, count, out);
 }
 #endif
 
@@ -372,15 +371,10 @@ void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t c
     fillStratified<Isa>(set.key, dim, first, count, out);
 }
 
-// The registry keeps one blue-noise fill per pattern: it picks the ISA variant per call (one relaxed load).
-void blueFillForIsa(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                    const CrossPixelStrata& strata) {
-    switch (batchIsa()) {
-    case BatchIsa::Avx512: return fillStratified<BatchIsa::Avx512>(key, dim, first, count, out, &strata);
-    case BatchIsa::Avx2: return fillStratified<BatchIsa::Avx2>(key, dim, first, count, out, &strata);
-    case BatchIsa::Baseline: break;
-    }
-    fillStratified<BatchIsa::Baseline>(key, dim, first, count, out, &strata);
+template <BatchIsa Isa>
+void blueFillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                 const CrossPixelStrata& strata) {
+    fillStratified<Isa>(set.key, dim, first, count, out, &strata);
 }
 } // namespace
 
@@ -401,8 +395,7 @@ constinit const PatternOps kStratifiedPattern{
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointStratified(set.key, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = [](const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                     const CrossPixelStrata& strata) { blueFillForIsa(set.key, dim, first, count, out, strata); },
+    .fillStrata = {blueFillSet<BatchIsa::Baseline>, blueFillSet<BatchIsa::Avx2>, blueFillSet<BatchIsa::Avx512>},
 };
 
 } // namespace stipple::detail

@@ -66,11 +66,14 @@ private:
     void fill(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
     void point(const SetRef& set, const Dimension& dim, uint32_t p, float* out) const;
     // The blue-noise flag's variants of fill (blue_noise.h); off the flagless path.
-    void fillBlueNoise(const SetRef& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) const;
+    // pixel: the set's plain key (block included), which keys each pixel's own part.
+    void fillBlueNoise(const SetRef& set, const SetKey& pixel, const Dimension& dim, uint32_t first, uint32_t count,
+                       float* out) const;
 
     uint32_t pattern_;
     const PatternOps& ops_;
-    PatternFill fill_; // ops_.fill for the batch ISA at creation
+    PatternFill fill_;             // ops_.fill for the batch ISA at creation
+    PatternStrataFill fillStrata_; // ops_.fillStrata likewise
     uint32_t samplesPerPixel_;
     uint64_t seed_;
     uint64_t seedKey_; // seedKey(seed, the pattern's hash domain)

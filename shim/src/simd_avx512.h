@@ -10,6 +10,8 @@
 // batchIsa() is Avx512.
 #pragma once
 
+#include "blue_noise.h"
+
 #include <cstdint>
 
 namespace stipple::detail {
@@ -21,14 +23,14 @@ struct ProgressiveKernelArgs {
     uint32_t axisBits[3];
 };
 void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32_t first, uint32_t count, float* out);
-// The same with the blue-noise flag (blue_noise.h, CrossPixelStrata): the tile's offsets key and the pixel's lattice
-// values per axis.
-struct BlueSubCellArgs {
-    uint64_t offsetKey;
-    uint32_t lattice[3];
-};
-void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const BlueSubCellArgs& blue, uint32_t arity,
+// The same with the blue-noise flag (blue_noise.h): the tile's offsets key and the pixel's lattice values per axis,
+// read from the CrossPixelStrata itself (a copy's 64-bit read of two of its 32-bit lattice values, just stored,
+// missed store forwarding).
+void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const CrossPixelStrata& blue, uint32_t arity,
                            uint32_t first, uint32_t count, float* out);
+// The independent pattern with the blue-noise flag (pattern_independent.cpp): the set's key.
+void independentBlueAvx512(uint64_t key, const CrossPixelStrata& blue, uint32_t arity, uint32_t first, uint32_t count,
+                           float* out);
 
 // A poisson set served in its layered order (pattern_poisson.cpp): position p reads stored point
 // p ^ (orderSeed & (bit_floor(p) - 1)), output axis c its axis source[c], then shift + sign * x wrapped into [0,1).

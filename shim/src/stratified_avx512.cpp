@@ -3,7 +3,9 @@
 // stratified_avx512.cpp — the progressive stratified batch (pattern_stratified.cpp, progressiveChunks) with AVX-512
 // and GFNI intrinsics, 16 points per step: the same values, computed as progressivePoint does (simd_avx512.h).
 #include "batch_isa.h"
+#include "blue_noise_avx512.h"
 #include "hash.h"
+#include "hash_avx512.h"
 #include "progressive_strata.h"
 #include "simd_avx512.h"
 
@@ -48,22 +50,6 @@ STIPPLE_KERNEL __m512i axisJitterHead(__m512i u, uint32_t c) {
     return mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
 }
 
-// Lane indices that interleave three 16-lane axes into 48 floats (float f is axis f % 3 of point f / 3): the
-// first permute takes x or y, the second keeps that or takes z.
-struct Interleave3 {
-    alignas(64) int32_t xy[3][16];
-    alignas(64) int32_t z[3][16];
-    constexpr Interleave3() : xy(), z() {
-        for (int w = 0; w < 3; ++w)
-            for (int l = 0; l < 16; ++l) {
-                const int f = 16 * w + l, point = f / 3, c = f % 3;
-                xy[w][l] = (c == 1 ? 16 : 0) + point;
-                z[w][l] = c == 2 ? 16 + point : l;
-            }
-    }
-};
-inline constexpr Interleave3 kInterleave3{};
-
 // The GF(2) affine matrix that sets bit i of every byte to bit from[i] (gf2p8affine: result bit i is the parity of
 // byte 7 - i of the matrix ANDed with the input byte); from[i] < 0 leaves bit i zero.
 constexpr int64_t bitMatrix(const int (&from)[8]) {
@@ -73,9 +59,7 @@ constexpr int64_t bitMatrix(const int (&from)[8]) {
     return int64_t(m);
 }
 // Bytes of every dword reversed (reverse32's shuffle).
-STIPPLE_KERNEL __m512i reverseBytes(__m512i v) {
-    return _mm512_shuffle_epi8(v, dwordByteReversal());
-}
+STIPPLE_KERNEL __m512i reverseBytes(__m512i v) { return _mm512_shuffle_epi8(v, dwordByteReversal()); }
 
 // 2D cells of q, as cell[c] << (24 - axisBits[c]) before masking: axis 0 has q's even bits, axis 1 its odd bits,
 // each read from bit 0 as the cell's most significant bit (progressiveCell). With q's bytes reversed in every dword,
@@ -140,20 +124,11 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
                                             0xf6)); // a | (b ^ c)
 }
 
-// mix64 (hash.h) of 8 64-bit lanes.
-STIPPLE_KERNEL __m512i mix64(__m512i z) {
-    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)),
-                           _mm512_set1_epi64(int64_t(0xbf58476d1ce4e5b9ull)));
-    z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)),
-                           _mm512_set1_epi64(int64_t(0x94d049bb133111ebull)));
-    return _mm512_xor_si512(z, _mm512_srli_epi64(z, 31));
-}
-
 // The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
 // ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
 template <uint32_t Arity>
 STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
-    __m256i half[2];
+    __m512i half[2];
     for (int h = 0; h < 2; ++h) {
         __m512i wide[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
@@ -164,42 +139,55 @@ STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
         if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
         const __m512i counter =
             _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)), _mm512_set1_epi64(int64_t(kGolden64)));
-        half[h] = _mm512_cvtepi64_epi32(mix64(_mm512_xor_si512(counter, _mm512_set1_epi64(int64_t(offsetKey)))));
+        half[h] = hashAtScaled(_mm512_set1_epi64(int64_t(offsetKey)), counter);
     }
-    return _mm512_inserti64x4(_mm512_castsi256_si512(half[0]), half[1], 1);
+    // The low dwords of both halves in lane order: one permute.
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    return _mm512_permutex2var_epi32(half[0], even, half[1]);
 }
 
-// jitterInSubCell (blue_noise.h) of 16 lanes: the sub-cell tent((c + o) mod Q), Q = 2^L, with the tent as
-// (2c xor -(c >= Q/2)) mod Q, in the top L bits; the jitter below.
+// With the flag, the first pass of a chunk of blocks leaves each block's cell bits (as top) and full jitter words
+// per axis here; the second moves the jitters into the pixel's sub-cells of the points' strata. Two passes, so
+// that the strata's 64-bit offset hashes do not lengthen one block's chain of latencies beyond what the core
+// overlaps across blocks.
+constexpr uint32_t kBlueChunkBlocks = 16;
 template <uint32_t Arity>
-STIPPLE_KERNEL __m512i jitterInSubCell(uint32_t lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
-    constexpr uint32_t L = Arity == 1 ? 12 : 6, Q = 1u << L;
-    const __m512i qMask = _mm512_set1_epi32(int(Q - 1));
-    const __m512i o = axis ? _mm512_srli_epi32(offsets, 8 * axis) : offsets; // axis < 3
-    const __m512i c = _mm512_and_si512(_mm512_add_epi32(o, _mm512_set1_epi32(int(lattice))), qMask);
-    const __m512i flip = _mm512_sub_epi32(_mm512_setzero_si512(), _mm512_srli_epi32(c, L - 1));
-    const __m512i t = _mm512_and_si512(_mm512_xor_si512(_mm512_slli_epi32(c, 1), flip), qMask);
-    return _mm512_or_si512(_mm512_slli_epi32(t, 32 - L), _mm512_srli_epi32(jitter, L));
-}
+struct BlueStage {
+    __m512i top[kBlueChunkBlocks][Arity];
+    __m512i jitter[kBlueChunkBlocks][Arity];
+};
 
-// 2D and 3D with the flag: the full jitter words (axisJitterHead then lowbias32's last step), moved into the
-// pixel's sub-cells of the points' strata, as floats per axis.
+// One block of the second pass: `floats` values from out.
 template <uint32_t Arity>
-STIPPLE_KERNEL void blueAxes(const __m512i* top, const __m512i* topMask, const __m128i* cellShift, __m512i t,
-                             const BlueSubCellArgs& blue, const __m128i* jitterShift, __m512* axis) {
+STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, const CrossPixelStrata& blue,
+                              const __m512i* topMask, const __m128i* cellShift, const __m128i* jitterShift, float* out,
+                              uint32_t floats) {
     __m512i cell[Arity];
     for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
-    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey);
+    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey());
+    __m512 axis[Arity];
+    for (uint32_t c = 0; c < Arity; ++c)
+        axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, jitter[c]),
+                          jitterShift[c]);
+    storeInterleaved<Arity>(out, axis, floats);
+}
+
+// With the flag, a block's cell bits and jitter words: staged for the second pass, or, in a one-block call (nothing
+// to overlap), finished at once.
+template <uint32_t Arity>
+STIPPLE_KERNEL void blueBlockOrStage(BlueStage<Arity>& stage, uint32_t block, bool oneBlock, const __m512i* top,
+                                     const __m512i* jitter, const CrossPixelStrata& blue, const __m512i* topMask,
+                                     const __m128i* cellShift, const __m128i* jitterShift, float* out,
+                                     uint32_t floats) {
+    if (oneBlock) return blueBlock<Arity>(top, jitter, blue, topMask, cellShift, jitterShift, out, floats);
     for (uint32_t c = 0; c < Arity; ++c) {
-        const __m512i x = axisJitterHead(t, c);
-        const __m512i jitter =
-            jitterInSubCell<Arity>(blue.lattice[c], offsets, c, _mm512_xor_si512(x, _mm512_srli_epi32(x, 16)));
-        axis[c] = valueOf(top[c], topMask[c], jitter, jitterShift[c]);
+        stage.top[block][c] = top[c];
+        stage.jitter[block][c] = jitter[c];
     }
 }
 
 template <uint32_t Arity, bool Blue>
-[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, const BlueSubCellArgs* blue, uint32_t first,
+[[STIPPLE_TARGET_AVX512]] void progressive(const ProgressiveKernelArgs& a, const CrossPixelStrata* blue, uint32_t first,
                                            uint32_t count, float* out) {
     const uint32_t bits = a.pointBits;
     const __m512i mask = _mm512_set1_epi32(int((1u << bits) - 1u));
@@ -222,77 +210,100 @@ template <uint32_t Arity, bool Blue>
             stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
-    for (uint32_t base = 0; base < count; base += 16) {
-        const uint32_t blockFirst = first + base;
-        // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
-        // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
-        const __m512i reversed =
-            blockFirst == 0 && bits >= 4 ? reversedLanes
-            : blockFirst % 16 == 0 && bits >= 4
-                ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
-                : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
-        const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, orderSeed)), unused);
-        const __m512i scrambled = laineKarras(shuffled, valueSeed);
-        const __m512i q = _mm512_and_si512(scrambled, mask);
-        const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
-        float* o = out + size_t(base) * Arity;
-        if constexpr (Arity == 1) {
-            // The jitter word is the unmasked scramble (progressivePoint).
-            // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
-            const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
-            const __m512i top = _mm512_shuffle_epi8(
-                bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
-            if constexpr (Blue) {
-                const __m512i cell = _mm512_srl_epi32(_mm512_and_si512(top, topMask[0]), cellShift[0]);
-                const __m512i offsets = stratumOffsets<1>(&cell, blue->offsetKey);
-                const __m512i jitter = jitterInSubCell<1>(blue->lattice[0], offsets, 0, scrambled);
-                storeFirst(o, valueOf(top, topMask[0], jitter, jitterShift[0]), floats);
-            } else {
-                storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
-            }
-        } else {
-            // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled index
-            // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
-            const __m512i t = _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
-                                                        _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))),
-                                                        0x96);
-            __m512 v[Arity];
-            if constexpr (Arity == 2) {
-                __m512i top0, top1;
-                cells2D(q, top0, top1);
-                __m512 x, y;
+    alignas(64) BlueStage<Arity> stage;
+    for (uint32_t chunk = 0; chunk < count; chunk += kBlueChunkBlocks * 16) {
+        const uint32_t chunkEnd = count - chunk < kBlueChunkBlocks * 16 ? count : chunk + kBlueChunkBlocks * 16;
+        for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+            const uint32_t blockFirst = first + base;
+            const uint32_t block = (base - chunk) / 16;
+            // Index shuffle, then value scramble. Masking before a reversal is not needed: it keeps only low bits.
+            // (Block 0 apart: a scalar reversal of 0 would lie on the path of a one-block call.)
+            const __m512i reversed =
+                blockFirst == 0 && bits >= 4 ? reversedLanes
+                : blockFirst % 16 == 0 && bits >= 4
+                    ? _mm512_or_si512(_mm512_set1_epi32(int(reverseBits(blockFirst, bits))), reversedLanes)
+                    : _mm512_srl_epi32(reverse32(_mm512_add_epi32(_mm512_set1_epi32(int(blockFirst)), lanes)), unused);
+            const __m512i shuffled = _mm512_srl_epi32(reverse32(laineKarras(reversed, orderSeed)), unused);
+            const __m512i scrambled = laineKarras(shuffled, valueSeed);
+            const __m512i q = _mm512_and_si512(scrambled, mask);
+            const uint32_t floats = (count - base < 16 ? count - base : 16) * Arity;
+            float* o = out + size_t(base) * Arity;
+            if constexpr (Arity == 1) {
+                // The jitter word is the unmasked scramble (progressivePoint).
+                // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
+                const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
+                const __m512i top = _mm512_shuffle_epi8(
+                    bytes,
+                    _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
                 if constexpr (Blue) {
-                    const __m512i top[2] = {top0, top1};
-                    __m512 axis[2];
-                    blueAxes<2>(top, topMask, cellShift, t, *blue, jitterShift, axis);
-                    x = axis[0], y = axis[1];
+                    blueBlockOrStage<1>(stage, block, count <= 16, &top, &scrambled, *blue, topMask, cellShift,
+                                        jitterShift, o, floats);
                 } else {
-                    x = valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
-                    y = valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                    storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
                 }
-                const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
-                v[0] = _mm512_permutex2var_ps(x, lo, y);
-                v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
             } else {
-                __m512i top[3];
-                cells3D(q, top);
-                __m512 axis[3];
-                if constexpr (Blue) {
-                    blueAxes<3>(top, topMask, cellShift, t, *blue, jitterShift, axis);
+                // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled
+                // index
+                // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
+                const __m512i t =
+                    _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
+                                              _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))), 0x96);
+                __m512 v[Arity];
+                if constexpr (Arity == 2) {
+                    __m512i top0, top1;
+                    cells2D(q, top0, top1);
+                    if constexpr (Blue) {
+                        const __m512i top[2] = {top0, top1};
+                        __m512i jitter[2];
+                        for (uint32_t c = 0; c < 2; ++c) {
+                            const __m512i x = axisJitterHead(t, c);
+                            jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                        }
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
+                                                jitterShift, o, floats);
+                        continue;
+                    }
+                    const __m512 x =
+                        valueOfHead(top0, topMask[0], axisJitterHead(t, 0), jitterShift[0], jitterShift16[0]);
+                    const __m512 y =
+                        valueOfHead(top1, topMask[1], axisJitterHead(t, 1), jitterShift[1], jitterShift16[1]);
+                    const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
+                    v[0] = _mm512_permutex2var_ps(x, lo, y);
+                    v[1] = _mm512_permutex2var_ps(x, _mm512_add_epi32(lo, _mm512_set1_epi32(8)), y);
                 } else {
+                    __m512i top[3];
+                    cells3D(q, top);
+                    if constexpr (Blue) {
+                        __m512i jitter[3];
+                        for (uint32_t c = 0; c < 3; ++c) {
+                            const __m512i x = axisJitterHead(t, c);
+                            jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+                        }
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
+                                                jitterShift, o, floats);
+                        continue;
+                    }
+                    __m512 axis[3];
                     for (uint32_t c = 0; c < 3; ++c)
                         axis[c] =
                             valueOfHead(top[c], topMask[c], axisJitterHead(t, c), jitterShift[c], jitterShift16[c]);
+                    // Interleave x, y, z.
+                    for (uint32_t w = 0; w < 3; ++w) {
+                        const __m512 xy =
+                            _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
+                        v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
+                    }
                 }
-                // Interleave x, y, z.
-                for (uint32_t w = 0; w < 3; ++w) {
-                    const __m512 xy = _mm512_permutex2var_ps(axis[0], _mm512_load_si512(kInterleave3.xy[w]), axis[1]);
-                    v[w] = _mm512_permutex2var_ps(xy, _mm512_load_si512(kInterleave3.z[w]), axis[2]);
-                }
+                for (uint32_t w = 0; w < Arity; ++w)
+                    if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
             }
-            for (uint32_t w = 0; w < Arity; ++w)
-                if (floats > 16 * w) storeFirst(o + 16 * w, v[w], floats - 16 * w);
         }
+        if constexpr (Blue)
+            if (count > 16)
+                for (uint32_t base = chunk; base < chunkEnd; base += 16)
+                    blueBlock<Arity>(stage.top[(base - chunk) / 16], stage.jitter[(base - chunk) / 16], *blue, topMask,
+                                     cellShift, jitterShift, out + size_t(base) * Arity,
+                                     (count - base < 16 ? count - base : 16) * Arity);
     }
 }
 
@@ -306,7 +317,7 @@ void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32
     }
 }
 
-void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const BlueSubCellArgs& blue, uint32_t arity,
+void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const CrossPixelStrata& blue, uint32_t arity,
                            uint32_t first, uint32_t count, float* out) {
     switch (arity) {
     case 1: return progressive<1, true>(args, &blue, first, count, out);

@@ -94,10 +94,12 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
         stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa));
         BOOST_REQUIRE(stipple::detail::batchIsa() == static_cast<stipple::detail::BatchIsa>(isa));
         for (uint32_t pattern :
-             {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL})
+             {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL,
+              STIPPLE_PATTERN_PMJ02})
             for (uint32_t arity = 1; arity <= 3; ++arity)
                 for (uint32_t n : {1u, 2u, 4u, 13u, 16u, 64u, 256u, 4096u, 1u << 17, 1u << 18}) {
                     if (pattern == STIPPLE_PATTERN_POISSON && n > 4096) continue; // generation time, not serving
+                    if (pattern == STIPPLE_PATTERN_PMJ02 && n > 1u << 16) continue; // its largest sets
                     checkPattern(pattern, n, arity, 1);
                     if (n <= 256) checkPattern(pattern, n, arity, 3);
                 }
