@@ -151,15 +151,8 @@ constinit const PatternOps kHaltonPattern{
     .name = "halton",
     .domain = HashDomain::Halton,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::Unsupported,
-    .latticeUse = LatticeUse::Strata, // unused
-    .limits = {},
-    .prepare = nullptr,
-    .prepareStreamsOnFirstUse = false,
-    .strata = nullptr,
     .point = pointHalton,
     .fill = {fillHalton, fillHalton, fillHalton},
-    .fillStrata = {},
 };
 
 } // namespace stipple::detail

@@ -107,15 +107,8 @@ constinit const PatternOps kLatticePattern{
     .name = "lattice",
     .domain = HashDomain::Lattice,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::Unsupported,
-    .latticeUse = LatticeUse::Strata, // unused
-    .limits = {},
-    .prepare = nullptr,
-    .prepareStreamsOnFirstUse = false,
-    .strata = nullptr,
     .point = pointLattice,
     .fill = {fillLattice<BatchIsa::Baseline>, fillLattice<BatchIsa::Avx2>, fillLattice<BatchIsa::Avx512>},
-    .fillStrata = {},
 };
 
 } // namespace stipple::detail

@@ -316,16 +316,12 @@ constinit const PatternOps kPmj02Pattern{
     .name = "pmj02",
     .domain = HashDomain::Pmj02,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::Unsupported,
-    .latticeUse = LatticeUse::Strata, // unused
     .limits = {.maxArity = 3, .maxSetSize = 1u << Pmj02Family::kMaxLog2Length},
     .prepare = [](Dimension& dim) { dim.pmj02 = Pmj02Family::acquire(dim.log2Length); },
     .prepareStreamsOnFirstUse = false, // a family generates its sequences on first use
-    .strata = nullptr,
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPmj02(set.key, set.block, dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = {},
 };
 
 } // namespace stipple::detail

@@ -320,16 +320,11 @@ constinit const PatternOps kPoissonPattern{
     .name = "poisson",
     .domain = HashDomain::Poisson,
     .blockKeying = BlockKeying::Rekeyed,
-    .blueNoise = BlueNoiseMode::Unsupported,
-    .latticeUse = LatticeUse::Strata, // unused
-    .limits = {},
     .prepare = [](Dimension& dim) { dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize); },
     .prepareStreamsOnFirstUse = true,
-    .strata = nullptr,
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPoisson(set.key, dim, p, out); },
     .fill = {fillPoissonSet<BatchIsa::Baseline>, fillPoissonSet<BatchIsa::Avx2>, fillPoissonSet<BatchIsa::Avx512>},
-    .fillStrata = {},
 };
 
 // Generated afresh on every call: nothing to prepare, nothing per ISA.
@@ -338,16 +333,9 @@ constinit const PatternOps kPoissonSeedPattern{
     .name = "poisson-seed",
     .domain = HashDomain::PoissonSeed,
     .blockKeying = BlockKeying::Rekeyed,
-    .blueNoise = BlueNoiseMode::Unsupported,
-    .latticeUse = LatticeUse::Strata, // unused
-    .limits = {},
-    .prepare = nullptr,
-    .prepareStreamsOnFirstUse = false,
-    .strata = nullptr,
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPoissonSeed(set.key, dim, p, out); },
     .fill = {fillPoissonSeedSet, fillPoissonSeedSet, fillPoissonSeedSet},
-    .fillStrata = {},
 };
 
 } // namespace stipple::detail

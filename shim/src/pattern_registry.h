@@ -60,25 +60,27 @@ using PatternPoint = void (*)(const SetKey& set, const Dimension& dim, uint32_t 
 using PatternStrataFill = void (*)(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                                    const CrossPixelStrata& strata);
 
+// A pattern's entry lists its name, domain, block keying, point and fill; the rest have defaults (a pattern without
+// blue noise, limits, precomputed state or strata to report).
 struct PatternOps {
     const char* name; // stipple_pattern_name's
     HashDomain domain;
     BlockKeying blockKeying;
-    BlueNoiseMode blueNoise;
-    LatticeUse latticeUse; // CrossPixelStrata only
-    PatternLimits limits;
+    BlueNoiseMode blueNoise = BlueNoiseMode::Unsupported;
+    LatticeUse latticeUse = LatticeUse::Strata; // CrossPixelStrata only
+    PatternLimits limits = {};
     // The pattern's precomputed state of a set (Dimension's arity, count, setSize and log2Length are set):
     // nullptr when it has none. Streams are prepared when the sampler is created, or on their first use when
     // prepareStreamsOnFirstUse (state that counts against a cache budget).
-    void (*prepare)(Dimension& dim);
-    bool prepareStreamsOnFirstUse;
+    void (*prepare)(Dimension& dim) = nullptr;
+    bool prepareStreamsOnFirstUse = false;
     // stipple_dimension_info's strata per axis; nullptr: the pattern reports none (zeros).
-    void (*strata)(const Dimension& dim, uint32_t* axes);
+    void (*strata)(const Dimension& dim, uint32_t* axes) = nullptr;
     // Point p of the block alone, bitwise equal to fill's point p (patterns.h).
     PatternPoint point;
     // Points [first, first + count) of the block, one variant per BatchIsa (the same bits in each).
     PatternFill fill[kBatchIsaCount];
-    PatternStrataFill fillStrata[kBatchIsaCount]; // CrossPixelStrata only, per BatchIsa like fill
+    PatternStrataFill fillStrata[kBatchIsaCount] = {}; // CrossPixelStrata only, per BatchIsa like fill
 };
 
 // The key of block `block` of a set keyed `key` (BlockKeying).

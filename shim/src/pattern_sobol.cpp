@@ -145,16 +145,9 @@ constinit const PatternOps kSobolPattern{
     .name = "sobol",
     .domain = HashDomain::Sobol,
     .blockKeying = BlockKeying::Sequence,
-    .blueNoise = BlueNoiseMode::Unsupported,
-    .latticeUse = LatticeUse::Strata, // unused
-    .limits = {},
-    .prepare = nullptr,
-    .prepareStreamsOnFirstUse = false,
-    .strata = nullptr,
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointSobol(SobolSet::perPixel(set.key).atBlock(set.block), dim, p, out); },
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
-    .fillStrata = {},
 };
 
 } // namespace stipple::detail

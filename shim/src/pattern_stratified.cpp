@@ -385,9 +385,7 @@ constinit const PatternOps kStratifiedPattern{
     .blockKeying = BlockKeying::Rekeyed,
     .blueNoise = BlueNoiseMode::CrossPixelStrata,
     .latticeUse = LatticeUse::Strata,
-    .limits = {},
     .prepare = [](Dimension& dim) { dim.grid = StrataGrid::choose(dim.arity, dim.setSize); },
-    .prepareStreamsOnFirstUse = false,
     .strata =
         [](const Dimension& dim, uint32_t* axes) {
             for (uint32_t c = 0; c < dim.arity; ++c) axes[c] = dim.grid.axis[c];
