@@ -12,7 +12,6 @@
 #   STIPPLE_FUZZ_SECONDS  seconds per harness (default 20; a longer local run: 600 or more)
 #   STIPPLE_JOBS          parallel build jobs and harnesses run at once (default 2)
 #   STIPPLE_FUZZ_ONLY     space-separated harness names to run (default: all)
-#   STIPPLE_BUILD_ONLY    1: configure and build, run nothing (ci/test.sh builds so in the background)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -27,10 +26,6 @@ args=(--preset fuzz)
 cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
 cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer render_args_fuzzer \
     validate_args_fuzzer provenance_fuzzer
-if [[ "${STIPPLE_BUILD_ONLY:-0}" == 1 ]]; then
-    echo "fuzz.sh: built in $((SECONDS - start)) s"
-    exit 0
-fi
 
 # harness name, part folder, seed corpus and regressions folders (in <part>/fuzz/)
 harnesses=("stipple_api_fuzzer shim corpus regressions" "scene_fuzzer integrators corpus regressions"

@@ -13,8 +13,6 @@
 #   STIPPLE_JOBS                        parallel build and test jobs (default 2)
 #   STIPPLE_SANITIZERS                  "asan tsan" (default), or one of them
 #   STIPPLE_TSAN_EXCLUDE                ctest -E regex of parallel tests to leave out of the TSan run (default: none)
-#   STIPPLE_BUILD_ONLY                  1: configure and build, run nothing (ci/test.sh builds the TSan tree so, in
-#                                       the background, while other tests run)
 #
 # TSan and TBB: Debian's libtbb is not instrumented, so TSan cannot see tbb::parallel_for's hand-overs. TSan builds
 # of the renderer therefore render tiles on std::thread workers (integrators/src/renderer.cpp, under
@@ -51,32 +49,27 @@ seed_test_costs() { # build dir
 
 status=0
 start=$SECONDS
-run=$([[ "${STIPPLE_BUILD_ONLY:-0}" == 1 ]] && echo 0 || echo 1)
 if [[ " $which " == *" asan "* ]]; then
     dir=${STIPPLE_ASAN_DIR:-build/asan}
     configure_and_build asan "$dir" -LE 'slow|slurm'
-    if [[ $run == 1 ]]; then
-        # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
-        # third-party libraries (see ci/sanitizers.supp).
-        seed_test_costs "$dir"
-        export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
-        export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
-        export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-        ctest --test-dir "$dir" -LE 'slow|slurm' -j "$jobs" --output-on-failure --timeout 900 || status=1
-        unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
-    fi
+    seed_test_costs "$dir"
+    # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
+    # third-party libraries (see ci/sanitizers.supp).
+    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+    export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    ctest --test-dir "$dir" -LE 'slow|slurm' -j "$jobs" --output-on-failure --timeout 900 || status=1
+    unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
     echo "sanitizers.sh: asan done after $((SECONDS - start)) s"
 fi
 if [[ " $which " == *" tsan "* ]]; then
     dir=${STIPPLE_TSAN_DIR:-build/tsan}
     exclude=${STIPPLE_TSAN_EXCLUDE:-}
     configure_and_build tsan "$dir" -L parallel ${exclude:+-E "$exclude"}
-    if [[ $run == 1 ]]; then
-        seed_test_costs "$dir"
-        export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
-        ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j "$jobs" --output-on-failure --timeout 900 || status=1
-        unset TSAN_OPTIONS
-    fi
+    seed_test_costs "$dir"
+    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp:print_suppressions=0"
+    ctest --test-dir "$dir" -L parallel ${exclude:+-E "$exclude"} -j "$jobs" --output-on-failure --timeout 900 || status=1
+    unset TSAN_OPTIONS
     echo "sanitizers.sh: tsan done after $((SECONDS - start)) s"
 fi
 echo "sanitizers.sh: $((SECONDS - start)) s, status $status"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // blue_noise_avx512.h — jitterInSubCell (blue_noise.h) on 16 lanes, for the hand-written AVX-512 kernels' own files.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // hash_avx512.h — hash.h's mix64 and hashAt on 8 64-bit lanes, for the hand-written AVX-512 kernels' own files.
 #pragma once
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // independent_avx512.cpp — the independent pattern's blue-noise batch (pattern_independent.cpp, blueHashedFloats)
 // with AVX-512 intrinsics, 16 points per step: the same values as pointIndependent with the flag.
 //
