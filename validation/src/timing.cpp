@@ -87,8 +87,8 @@ void evaluateTimeRatio(const Check& k, const Matrix& m, const std::vector<Result
             o.status = CheckStatus::Fail;
         else if (v == CheckStatus::NotSeparated && o.status == CheckStatus::Pass)
             o.status = v;
-        o.figures.push_back(fmt("%s: CPU ratio %s; wall ratio %s [%s]%s", s.name.c_str(), ratioText(cpu).c_str(),
-                                ratioText(wall).c_str(), checkStatusName(verdict(wall)),
+        o.figures.push_back(fmt("%s: CPU ratio %s; wall ratio %s [wall alone: %s]%s", s.name.c_str(),
+                                ratioText(cpu).c_str(), ratioText(wall).c_str(), checkStatusName(verdict(wall)),
                                 v == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v)).c_str()));
     }
     if (!any) {
