@@ -137,8 +137,8 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
     std::string pairs;
     for (size_t i = 0; i < k.patterns.size(); ++i) pairs += (i ? (k.patterns.size() == 2 ? " vs " : ", ") : "") + k.patterns[i];
     const Margin margin{k.marginLo, k.marginHi};
-    o.claim = fmt("compare %s%s @ %u spp: %s, %s %s, expect %s (margin %.2f-%.2f; 95%% excludes 1: "
-                  "BETTER/WORSE, \"within the margin\" when the 90%% interval is inside; else inside: EQUIVALENT)%s",
+    o.claim = fmt("compare %s%s @ %u spp: %s, %s %s, expect %s (margin %.2f-%.2f; 90%% inside: EQUIVALENT, 95%% "
+                  "excludes 1: BETTER/WORSE)%s",
                   k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp, pairs.c_str(),
                   k.flipMetric ? "mean FLIP"
                                : fmt("relative squared error Σ_rgb e² / (reference + image mean)², capped at 3·%g²",
@@ -175,10 +175,10 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                     o.figures.push_back(fmt(
                         "%s %s: %s/%s %s %s (dof %.0f)%s%s", s.name.c_str(),
                         v.region.empty() ? "whole image" : v.region.c_str(), v.a.c_str(), v.b.c_str(),
-                        ratioText(v.comparison).c_str(), verdictLabel(v.comparison).c_str(), v.comparison.dof,
+                        ratioText(v.comparison).c_str(), verdictName(v.comparison.verdict), v.comparison.dof,
                         k.flipMetric
                             ? ""
-                            : fmt("; plain MSE %s %s", ratioText(plain).c_str(), verdictLabel(plain).c_str()).c_str(),
+                            : fmt("; plain MSE %s %s", ratioText(plain).c_str(), verdictName(plain.verdict)).c_str(),
                         v.status == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v.status)).c_str()));
                     o.verdicts.push_back(v);
                 }
@@ -208,7 +208,6 @@ Json verdictsJson(const std::vector<VerdictRow>& verdicts) {
                          {"hi90", num(v.comparison.hi90)},
                          {"dof", num(v.comparison.dof)},
                          {"verdict", verdictName(v.comparison.verdict)},
-                         {"within_margin", v.comparison.equivalent},
                          {"status", checkStatusName(v.status)}});
     return a;
 }

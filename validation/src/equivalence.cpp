@@ -65,20 +65,12 @@ Comparison judgeLogRatio(double logRatio, double variance, double dof, const Mar
     c.dof = dof;
     c.separated = c.hi95 < 1 || c.lo95 > 1;
     c.equivalent = c.lo90 >= margin.lo && c.hi90 <= margin.hi;
-    // The direction first (see the header): equivalence names only what is not separated.
-    c.verdict = c.hi95 < 1      ? Verdict::Better
-                : c.lo95 > 1    ? Verdict::Worse
-                : c.equivalent ? Verdict::Equivalent
-                               : Verdict::NotSeparated;
+    // A difference smaller than the margin is reported as equivalent: the ratio and interval say which way it leans.
+    c.verdict = c.equivalent ? Verdict::Equivalent
+                : c.hi95 < 1 ? Verdict::Better
+                : c.lo95 > 1 ? Verdict::Worse
+                             : Verdict::NotSeparated;
     return c;
-}
-
-std::string verdictLabel(const Comparison& c, bool flipped) {
-    Verdict v = c.verdict;
-    if (flipped) v = v == Verdict::Better ? Verdict::Worse : v == Verdict::Worse ? Verdict::Better : v;
-    std::string label = verdictName(v);
-    if (c.separated && c.equivalent) label += ", within the margin";
-    return label;
 }
 
 LogShift pairedLogRatio(const std::vector<double>& a, const std::vector<double>& b) {

@@ -12,10 +12,8 @@
 //
 // Two patterns are compared on the log of the ratio of their errors (delta method, Welch–Satterthwaite degrees of
 // freedom), optionally times the paired per-seed ratio of their CPU seconds (equal-time comparison). The verdict:
-// BETTER / WORSE when the 95% interval excludes 1; else EQUIVALENT when the 90% interval lies inside the margin (two
-// one-sided tests at 5% each, Schuirmann 1987); NOT SEPARATED otherwise. The direction comes first: a separated
-// difference that is also inside the margin is "WORSE, within the margin", so an interval whose edge sits on the
-// margin (an equal-time ratio moves by a few percent with the machine's load) changes the note, not the word. Coverage is checked by simulation with
+// EQUIVALENT when the 90% interval lies inside the margin (two one-sided tests at 5% each, Schuirmann 1987);
+// BETTER / WORSE when the 95% interval excludes 1; NOT SEPARATED otherwise. Coverage is checked by simulation with
 // heavy-tailed errors in validation/tests/equivalence_test.cpp.
 #pragma once
 
@@ -56,9 +54,6 @@ struct Comparison {
     bool equivalent = false; // the 90% interval lies inside the margin
     Verdict verdict = Verdict::Unmeasured;
 };
-
-// The verdict's name, with ", within the margin" when a separated difference is also equivalent. `flipped`: as B / A.
-std::string verdictLabel(const Comparison& c, bool flipped = false);
 
 // From the log ratio, its variance and degrees of freedom.
 Comparison judgeLogRatio(double logRatio, double variance, double dof, const Margin& margin);

@@ -101,16 +101,18 @@ namespace {
 std::string comparisonCell(const Comparison& c, CheckStatus status, bool flipped) {
     if (c.verdict == Verdict::Unmeasured) return "<td>–</td>";
     double r = c.ratio, lo = c.lo95, hi = c.hi95;
+    Verdict v = c.verdict;
     if (flipped) {
         r = 1 / c.ratio;
         lo = 1 / c.hi95;
         hi = 1 / c.lo95;
+        v = v == Verdict::Better ? Verdict::Worse : v == Verdict::Worse ? Verdict::Better : v;
     }
     const char* study = status == CheckStatus::Pass ? "holds" : status == CheckStatus::Fail ? "refuted" : "undecided";
     const char* cls = status == CheckStatus::Pass ? "PASS" : status == CheckStatus::Fail ? "FAIL" : "NOT";
     return fmt("<td class=\"v\">%.3g× <small>(%.3g–%.3g)</small><br><strong>%s</strong> <span class=\"%s\">%s</span>"
                "</td>",
-               r, lo, hi, verdictLabel(c, flipped).c_str(), cls, study);
+               r, lo, hi, verdictName(v), cls, study);
 }
 
 struct StudyColumn {
@@ -190,9 +192,9 @@ std::string studyTableHtml(const ReportInputs& in) {
       << fmt("%g", 3 * kRelativeErrorCap * kRelativeErrorCap)
       << " per pixel (a few bright pixels cannot decide it; the checks' figures give the plain-MSE ratio beside), "
          "or mean FLIP; "
-         "<strong>BETTER</strong> / <strong>WORSE</strong>: the 95% interval excludes 1 (\"within the margin\" "
-         "when the 90% interval also lies inside the margin); else <strong>EQUIVALENT</strong>: the 90% interval "
-         "lies inside the margin (two one-sided tests at 5%), else <strong>NOT SEPARATED</strong>. <em>holds / refuted / undecided</em>: the study's statement of the column against that "
+         "<strong>EQUIVALENT</strong>: the 90% interval lies inside the margin (two one-sided tests at 5%), "
+         "<strong>BETTER</strong> / <strong>WORSE</strong>: the 95% interval excludes 1, else <strong>NOT "
+         "SEPARATED</strong>. <em>holds / refuted / undecided</em>: the study's statement of the column against that "
          "verdict. Intervals from the seeds and the image's "
       << kErrorBlockSize << "-pixel blocks (see the README, <em>Deciding</em>).</p>\n";
     return o.str();
@@ -221,7 +223,7 @@ std::string bestPatternText(const ReportInputs& in, const MatrixScene& s, bool e
     const Comparison c = comparePatterns(rows, s, ranked[0].second, ranked[1].second, spp, -1, false, equalTime);
     return patternHeader(ranked[0].second) +
            fmt(" <small>%.3g× %s's error%s (95%% %.3g–%.3g)</small> <strong>%s</strong>", c.ratio,
-               ranked[1].second.c_str(), equalTime ? "·time" : "", c.lo95, c.hi95, verdictLabel(c).c_str());
+               ranked[1].second.c_str(), equalTime ? "·time" : "", c.lo95, c.hi95, verdictName(c.verdict));
 }
 
 } // namespace
@@ -260,7 +262,7 @@ std::string verdictHeadlineHtml(const ReportInputs& in) {
         o << "<tr><td><a href=\"#scene-" << safeName(s.name) << "\">" << html(s.name) << "</a></td><td>"
           << bestPatternText(in, s, false) << "</td><td>" << bestPatternText(in, s, true) << "</td></tr>\n";
     o << "</table></div>\n<p class=\"note\">The margin is the best pattern's error over the runner-up's, with its "
-         "verdict (EQUIVALENT or \"within the margin\": the two are within the margin of each other).</p>\n";
+         "verdict (EQUIVALENT: the two are within the margin of each other).</p>\n";
     return o.str();
 }
 
