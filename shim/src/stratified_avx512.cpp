@@ -50,6 +50,15 @@ STIPPLE_KERNEL __m512i axisJitterHead(__m512i u, uint32_t c) {
     return mul32(_mm512_xor_si512(x, _mm512_srli_epi32(x, 15)), 0x846ca68bu);
 }
 
+// The whole axisJitter per axis (the head and its last step), for the blue-noise kernels' sub-cell moves.
+template <uint32_t Arity>
+STIPPLE_KERNEL void axisJitters(__m512i u, __m512i (&jitter)[Arity]) {
+    for (uint32_t c = 0; c < Arity; ++c) {
+        const __m512i x = axisJitterHead(u, c);
+        jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
+    }
+}
+
 // The GF(2) affine matrix that sets bit i of every byte to bit from[i] (gf2p8affine: result bit i is the parity of
 // byte 7 - i of the matrix ANDed with the input byte); from[i] < 0 leaves bit i zero.
 constexpr int64_t bitMatrix(const int (&from)[8]) {
@@ -243,8 +252,8 @@ template <uint32_t Arity, bool Blue>
                 }
             } else {
                 // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled
-                // index
-                // (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two parallel shifts.
+                // index (< 2^22), is (s << 2) ^ (s >> 14) ^ (seed ^ seed >> 16): one three-way XOR after two
+                // parallel shifts.
                 const __m512i t =
                     _mm512_ternarylogic_epi32(_mm512_slli_epi32(shuffled, 2), _mm512_srli_epi32(shuffled, 14),
                                               _mm512_set1_epi32(int(a.jitterSeed ^ (a.jitterSeed >> 16))), 0x96);
@@ -255,10 +264,7 @@ template <uint32_t Arity, bool Blue>
                     if constexpr (Blue) {
                         const __m512i top[2] = {top0, top1};
                         __m512i jitter[2];
-                        for (uint32_t c = 0; c < 2; ++c) {
-                            const __m512i x = axisJitterHead(t, c);
-                            jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
-                        }
+                        axisJitters<2>(t, jitter);
                         blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
                                                 jitterShift, o, floats);
                         continue;
@@ -275,10 +281,7 @@ template <uint32_t Arity, bool Blue>
                     cells3D(q, top);
                     if constexpr (Blue) {
                         __m512i jitter[3];
-                        for (uint32_t c = 0; c < 3; ++c) {
-                            const __m512i x = axisJitterHead(t, c);
-                            jitter[c] = _mm512_xor_si512(x, _mm512_srli_epi32(x, 16));
-                        }
+                        axisJitters<3>(t, jitter);
                         blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
                                                 jitterShift, o, floats);
                         continue;
