@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Copyright 2026 The stipple authors
-# Fuzzing CI: build the libFuzzer harnesses with clang (ASan + UBSan + libFuzzer) and run each for a bounded
-# time over its seed corpus and its regressions, STIPPLE_JOBS harnesses at a time. Exit status 1 when any harness
+# Fuzzing CI: build the libFuzzer harnesses in the asan preset's tree (clang, ASan + UBSan; the tests' tree too, so
+# after ci/sanitizers.sh only the harnesses' own sources compile) and run each for a bounded time over its seed
+# corpus and its regressions, STIPPLE_JOBS harnesses at a time. Exit status 1 when any harness
 # finds a crash, a leak, a sanitizer report or a timeout; the reproducer is left in <build>/fuzz-out/<harness>/
 # and the command to replay it is printed. Fix the bug, then add the file to the harness's regressions folder below (replayed by
 # CTest).
 #
 # Environment (all optional):
-#   STIPPLE_FUZZ_DIR      build directory (default: the fuzz preset's build/fuzz)
+#   STIPPLE_FUZZ_DIR      build directory (default: the asan preset's build/asan, shared with ci/sanitizers.sh)
 #   STIPPLE_FUZZ_SECONDS  seconds per harness (default 20; a longer local run: 600 or more)
 #   STIPPLE_JOBS          parallel build jobs and harnesses run at once (default 2)
 #   STIPPLE_FUZZ_ONLY     space-separated harness names to run (default: all)
@@ -17,13 +18,11 @@ cd "$(dirname "$0")/.."
 root=$PWD
 seconds=${STIPPLE_FUZZ_SECONDS:-20}
 jobs=${STIPPLE_JOBS:-2}
-dir=${STIPPLE_FUZZ_DIR:-build/fuzz}
+dir=${STIPPLE_FUZZ_DIR:-${STIPPLE_ASAN_DIR:-build/asan}}
 start=$SECONDS
 
-args=(--preset fuzz)
-[[ -n "${STIPPLE_FUZZ_DIR:-}" ]] && args+=(-B "$dir")
-# The scenes part (city generator) has nothing to fuzz here.
-cmake "${args[@]}" -DSTIPPLE_BUILD_SCENES=OFF
+# The scenes part (city generator) has nothing to fuzz here (and ci/sanitizers.sh configures the tree the same way).
+cmake --preset asan -B "$dir" -DSTIPPLE_BUILD_SCENES=OFF
 cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer render_args_fuzzer \
     validate_args_fuzzer provenance_fuzzer
 

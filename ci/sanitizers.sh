@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Copyright 2026 The stipple authors
-# Sanitizer CI: build the asan preset (ASan + UBSan, RelWithDebInfo; the test programs' own sources at -O0, the code
-# under test at -O2: STIPPLE_TEST_COMPILE_OPTIONS, which cut the build from 433 to 263 s) and run the whole CTest
-# suite but labels `slow` and `slurm` (the Slurm test checks job orchestration, which the release run covers; `slow`:
-# the CI matrix and the intervals' coverage simulation, minutes under ASan); build the tsan preset (-O1: about a
-# fifth less compile time than -O2) and run label `parallel` (tests that exercise several threads), STIPPLE_JOBS at
-# a time (the one timing test among them, validation.timing_under_load, is RUN_SERIAL).
+# Sanitizer CI: build the asan preset (clang, ASan + UBSan, RelWithDebInfo at -O2; the test programs' own sources
+# at -O0: STIPPLE_TEST_COMPILE_OPTIONS) and run the whole CTest suite but labels `slow` and `slurm` (the Slurm test
+# checks job orchestration, which the release run covers; `slow`: the CI matrix and the intervals' coverage
+# simulation, minutes under ASan); build the tsan preset (gcc at -O1: about a fifth less compile time than -O2)
+# and run label `parallel` (tests that exercise several threads), STIPPLE_JOBS at a time (the one timing test
+# among them, validation.timing_under_load, is RUN_SERIAL).
+# The asan tree is also the fuzzing tree (ci/fuzz.sh runs its libFuzzer harnesses): one clang build instead of a
+# gcc one for the tests and a clang one for the fuzzers, 345 CPU-seconds instead of 685. libFuzzer's coverage
+# counters are limited to the fuzzed parsers (cmake/fuzz_coverage.txt), so the shim's kernels run at ASan speed.
 # Each stage builds only the targets its tests run (ci/test-targets.sh), not the whole tree.
 # Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
 #
@@ -55,13 +58,12 @@ if [[ " $which " == *" asan "* ]]; then
     dir=${STIPPLE_ASAN_DIR:-build/asan}
     configure_and_build asan "$dir" -LE 'slow|slurm'
     seed_test_costs "$dir"
-    # Leak checking on; UBSan reports are fatal (-fno-sanitize-recover in the preset); suppressions only for
-    # third-party libraries (see ci/sanitizers.supp).
+    # Leak checking on, with no suppressions (ci/sanitizers.supp is TSan's: clang's LSan refuses its entries);
+    # UBSan reports are fatal (-fno-sanitize-recover in the preset).
     export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
-    export LSAN_OPTIONS="suppressions=$supp:print_suppressions=0"
     export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
     ctest --test-dir "$dir" -LE 'slow|slurm' -j "$jobs" --output-on-failure --timeout 900 || status=1
-    unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
+    unset ASAN_OPTIONS UBSAN_OPTIONS
     echo "sanitizers.sh: asan done after $((SECONDS - start)) s"
 fi
 if [[ " $which " == *" tsan "* ]]; then

@@ -13,6 +13,7 @@
 // the past-the-layout stream; both Poisson patterns are served for every arity at N = 4099 (a prime > 4096).
 #define BOOST_TEST_MODULE stiff_shim
 #include "sampler_fixture.h"
+#include "stipple/testing/sanitizers.h"
 
 #include <algorithm>
 #include <chrono>
@@ -159,7 +160,7 @@ BOOST_AUTO_TEST_CASE(maximum_n_poisson_patterns_create_and_stream_past_layout) {
 }
 
 BOOST_AUTO_TEST_CASE(maximum_n_poisson_2d_served) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if STIPPLE_TESTING_SANITIZED
     BOOST_TEST_MESSAGE("skipped under a sanitizer: one 2^20-point relaxation takes minutes there");
     BOOST_CHECK(true);
 #else

@@ -19,7 +19,7 @@ render::RenderOptions resolveRenderOptions(const MatrixScene& ms, const render::
     return scene.resolve(o);
 }
 
-SceneFingerprint describeScene(const MatrixScene& ms, const render::Scene& scene, const render::RenderOptions& base,
+SceneFingerprint describeScene(const render::Scene& scene, const render::RenderOptions& base,
                                uint32_t referenceSpp) {
     SceneFingerprint s;
     s.loaded = true;
@@ -44,7 +44,7 @@ Fingerprint fingerprintRun(const Matrix& m, std::vector<std::optional<SceneFinge
             // "not loaded", as in the shards that tried to render it and skipped it).
             try {
                 auto scene = render::Scene::load(ms.path);
-                known[i] = describeScene(ms, *scene, resolveRenderOptions(ms, *scene, 0),
+                known[i] = describeScene(*scene, resolveRenderOptions(ms, *scene, 0),
                                          ms.referenceSpp ? ms.referenceSpp : m.reference.spp);
             } catch (const std::exception&) {
                 known[i] = SceneFingerprint{};

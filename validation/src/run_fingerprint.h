@@ -20,7 +20,7 @@ namespace stipple::validation {
 render::RenderOptions resolveRenderOptions(const MatrixScene& ms, const render::Scene& scene, int threads);
 
 // The scene's resolved settings as fingerprinted; `base` from resolveRenderOptions.
-SceneFingerprint describeScene(const MatrixScene& ms, const render::Scene& scene, const render::RenderOptions& base,
+SceneFingerprint describeScene(const render::Scene& scene, const render::RenderOptions& base,
                                uint32_t referenceSpp);
 
 // The fingerprint of a run of `matrix`: `known[i]` holds scene i when the run loaded it; the others are loaded

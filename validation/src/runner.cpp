@@ -282,7 +282,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             refOptions.pattern = m.reference.pattern;
             refOptions.spp = ms.referenceSpp ? ms.referenceSpp : m.reference.spp;
             refOptions.seed = m.reference.seed;
-            fingerprinted[si] = scene ? describeScene(ms, *scene, base, refOptions.spp)
+            fingerprinted[si] = scene ? describeScene(*scene, base, refOptions.spp)
                                       : external->fingerprint(refOptions.spp);
             progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d%s", ms.name.c_str(),
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,

@@ -2,6 +2,7 @@
 // Copyright 2026 The stipple authors
 
 #include "shard_fingerprint.h"
+#include "comparison_claims.h" // expectationName
 
 #include <filesystem>
 #include <fstream>
@@ -47,6 +48,23 @@ ordered_json checkJson(const Check& c) {
         j["spp"] = c.spp;
         break;
     case CheckType::TimeCeiling: j["seconds"] = c.seconds; break;
+    case CheckType::EqualTime:
+    case CheckType::EqualSpp:
+        j["order"] = c.order;
+        j["spp"] = c.spp;
+        j["region"] = c.region;
+        j["metric"] = c.flipMetric ? "flip" : "mse";
+        break;
+    case CheckType::Compare:
+        j["patterns"] = c.patterns;
+        j["at"] = c.equalTime ? "equal_time" : "equal_spp";
+        j["expect"] = expectationName(c.expect);
+        j["margin"] = {c.marginLo, c.marginHi};
+        j["spp"] = c.spp;
+        j["region"] = c.region;
+        j["metric"] = c.flipMetric ? "flip" : "mse";
+        j["fails_run"] = c.failFails;
+        break;
     }
     return j;
 }

@@ -76,7 +76,10 @@ BOOST_AUTO_TEST_CASE(equal_time_verdicts) {
     add(rows, "slow", {0.100, 0.101, 0.099, 0.100}, {4.0, 4.02, 3.98, 4.0}, 0);
     add(rows, "noisy", {0.05, 0.15, 0.45, 0.10}, {1, 1, 1, 1}, 0);
     Matrix m;
-    m.scenes.push_back({"s", "s.yaml", "s.yaml"});
+    MatrixScene scene;
+    scene.name = "s";
+    scene.file = scene.path = "s.yaml";
+    m.scenes.push_back(scene);
     m.patterns = {"fast", "slow", "noisy"};
     auto run = [&](std::vector<std::string> order) {
         Check k;

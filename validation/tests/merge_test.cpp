@@ -126,7 +126,8 @@ BOOST_AUTO_TEST_CASE(rows_no_measurement_gives_are_refused) {
         {"size 32x16 is not the scene's 16x16", [](ResultRow& r) { r.width = 32; }},
         {"region values for 1 regions; the scene has 0", [](ResultRow& r) { r.regionMse = {0.1}; }},
     };
-    for (const auto& [message, edit] : cases) {
+    for (const auto& [label, edit] : cases) {
+        const std::string message = label; // clang 14 cannot capture a structured binding in the lambda below
         Shards s;
         const std::string a = s.shard("a", {{"stratified", 2}, {"independent", 1}}, "stipple-render 1", edit);
         const std::string b = s.shard("b", {{"stratified", 1}, {"independent", 2}});

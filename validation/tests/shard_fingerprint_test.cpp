@@ -68,6 +68,35 @@ BOOST_FIXTURE_TEST_CASE(fields_in_order_and_equal_runs_agree, Fixture) {
     BOOST_TEST(!firstDifference(f, run(box())));
 }
 
+// Every field that defines a comparison claim is in the fingerprint: shards of matrices that differ in one of
+// them do not merge (each of these once left the fingerprint unchanged).
+BOOST_FIXTURE_TEST_CASE(comparison_claims_fields_differ, Fixture) {
+    auto withCheck = [&](const std::string& check) {
+        Matrix m = parseMatrix("scenes:\n  - { file: box.yaml, name: box, width: 16 }\n"
+                               "patterns: [independent, stratified]\nspp: [1, 4]\nseeds: 4\n"
+                               "reference: { spp: 16, seed: 7 }\nchecks:\n  - " + check + "\n",
+                               (dir / "m.yaml").string(), test::kVocabulary);
+        return runFingerprint(m, {box()}, "r 1", "shim 1 abc");
+    };
+    const std::string base = "{ type: compare, patterns: [independent, stratified], basis: samples, expect: equivalent }";
+    const Fingerprint a = withCheck(base);
+    for (const std::string& other :
+         {std::string("{ type: compare, patterns: [stratified, independent], basis: samples, expect: equivalent }"),
+          std::string("{ type: compare, patterns: [independent, stratified], basis: time, expect: equivalent }"),
+          std::string("{ type: compare, patterns: [independent, stratified], basis: samples, expect: better }"),
+          std::string("{ type: compare, patterns: [independent, stratified], basis: samples, expect: equivalent, "
+                      "margin: [0.9, 1.1] }"),
+          std::string("{ type: compare, patterns: [independent, stratified], basis: samples, expect: equivalent, "
+                      "fails_run: false }")}) {
+        const auto d = firstDifference(a, withCheck(other));
+        BOOST_TEST_CONTEXT(other) {
+            BOOST_REQUIRE(d);
+            BOOST_TEST(d->field == "matrix.checks");
+        }
+    }
+    BOOST_TEST(!firstDifference(a, withCheck(base)));
+}
+
 BOOST_FIXTURE_TEST_CASE(first_difference_names_field_and_values, Fixture) {
     SceneFingerprint deeper = box(), wider = box();
     deeper.maxDepth = 3;

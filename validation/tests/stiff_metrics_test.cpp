@@ -128,7 +128,11 @@ BOOST_AUTO_TEST_CASE(zero_and_undefined_errors_downstream) {
         }
     }
     Matrix m;
-    m.scenes.push_back({"s", "s.yaml", "s.yaml", 4, 4, "", -1});
+    MatrixScene scene;
+    scene.name = "s";
+    scene.file = scene.path = "s.yaml";
+    scene.width = scene.height = 4;
+    m.scenes.push_back(scene);
     m.patterns = {"exact", "broken", "fine"};
     m.spp = {4, 16};
     sortRows(rows, m);

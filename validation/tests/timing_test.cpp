@@ -83,7 +83,10 @@ BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {
     // seconds are unchanged. The claim a / b ≤ 1.05 passes on CPU seconds; the wall ratio is shown beside.
     auto rows = pairs({1.00, 1.01, 0.99, 1.00}, {1, 1, 1, 1}, {1.4, 1.8, 1.0, 1.5}, {1, 1, 1, 1});
     Matrix m;
-    m.scenes.push_back({"s", "s.yaml", "s.yaml"});
+    MatrixScene scene;
+    scene.name = "s";
+    scene.file = scene.path = "s.yaml";
+    m.scenes.push_back(scene);
     Check k;
     k.type = CheckType::TimeRatio;
     k.numerator = "a";

@@ -93,7 +93,7 @@ const ShimLibrary& ShimLibrary::get(const std::string& explicitPath) {
             dlclose(handle);
             break;
         }
-        auto lib = std::unique_ptr<ShimLibrary>(new ShimLibrary(handle, api, path));
+        auto lib = std::unique_ptr<ShimLibrary>(new ShimLibrary(api, path));
         const ShimLibrary& ref = *lib;
         loaded[explicitPath] = std::move(lib);
         return ref;

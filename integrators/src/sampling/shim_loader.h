@@ -38,9 +38,8 @@ public:
 
 private:
     std::string hashIdentity() const;
-    ShimLibrary(void* handle, const stipple_api* api, std::string path)
-        : handle_(handle), api_(api), path_(std::move(path)) {}
-    void* handle_ = nullptr;
+    // The library stays loaded until the process ends (its table is handed out by reference), so no handle is kept.
+    ShimLibrary(const stipple_api* api, std::string path) : api_(api), path_(std::move(path)) {}
     const stipple_api* api_ = nullptr;
     std::string path_;
     mutable std::once_flag identityOnce_;

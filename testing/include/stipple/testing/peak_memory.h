@@ -5,6 +5,8 @@
 // builds (shadow memory, quarantine, redzones) change what memory means: tests skip there (kUnderSanitizer).
 #pragma once
 
+#include "stipple/testing/sanitizers.h"
+
 #include <cstdint>
 #include <exception>
 #include <functional>
@@ -16,18 +18,6 @@
 #include <unistd.h>
 
 namespace stipple::testing {
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-inline constexpr bool kUnderSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-inline constexpr bool kUnderSanitizer = true;
-#else
-inline constexpr bool kUnderSanitizer = false;
-#endif
-#else
-inline constexpr bool kUnderSanitizer = false;
-#endif
 
 // Bytes by which `work` raised the peak resident size of a child process running it; nullopt when the child
 // failed (an exception from `work`, a crash). `work` runs in the child only: nothing it changes comes back.
