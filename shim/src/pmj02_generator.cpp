@@ -217,11 +217,12 @@ std::vector<uint32_t> generatePmj02Depth(const std::vector<FixedPoint2>& points,
     if (n > (size_t(1) << std::size(kDepthMatrix)))
         throw Error(STIPPLE_ERROR_INTERNAL, "pmj02 depth: more points than the depth matrix has columns");
     // C t leaves the digits of a prefix of 2^k points past digit k at 0 (C is upper triangular): each point at the
-    // bottom of its stratum. A nested uniform (Owen) scramble of the sequence's digits, one hashed flip per digit
+    // bottom of its stratum. A nested uniform (Owen) scramble of the matrix's 16 digits, one hashed flip per digit
     // and prefix, makes every point uniform inside its stratum, independently, for every prefix, and keeps every
-    // stratification above (it permutes the z strata of every level inside their parents). The digits below the
-    // sequence's resolution are random.
-    const uint32_t resolution = static_cast<uint32_t>(std::bit_width(n - 1));
+    // stratification above (it permutes the z strata of every level inside their parents). The digits below are
+    // random. Neither depends on the sequence's length, so sequences generated from one seed at different lengths
+    // share their z wherever they share their points (Pmj02Family relies on it).
+    constexpr uint32_t kDigits = std::size(kDepthMatrix);
     const uint64_t flips = hashCombine(seed, kDepthStream + 1);
     std::vector<uint32_t> z(n);
     Random random(hashCombine(seed, kDepthStream));
@@ -230,12 +231,11 @@ std::vector<uint32_t> generatePmj02Depth(const std::vector<FixedPoint2>& points,
         for (uint32_t bits = t, l = 0; bits != 0; bits >>= 1, ++l)
             if (bits & 1u) digits ^= kDepthMatrix[l];
         uint32_t scrambled = digits;
-        for (uint32_t j = 0; j < resolution; ++j) { // digit j + 1, flipped by a hash of digits 1 .. j
+        for (uint32_t j = 0; j < kDigits; ++j) { // digit j + 1, flipped by a hash of digits 1 .. j
             const uint32_t prefix = j == 0 ? 0u : digits >> (32 - j);
             scrambled ^= static_cast<uint32_t>(hashAt(flips, (uint64_t(j) << 32) | prefix) & 1u) << (31 - j);
         }
-        z[t] = scrambled | (resolution == 0 ? static_cast<uint32_t>(random.next() >> 32)
-                                            : static_cast<uint32_t>(random.next() >> 32) >> resolution);
+        z[t] = scrambled | static_cast<uint32_t>(random.next() >> 32) >> kDigits;
     }
     return z;
 }

@@ -245,6 +245,26 @@ BOOST_AUTO_TEST_CASE(points_past_the_set_continue_the_sequence) {
         }
 }
 
+// pmj02's families share their sequences (sequence j of a family is a prefix of sequence j of every longer one,
+// z included), so the first 4N samples of an N-sample set are bitwise the fresh 4N-sample set of a sampler with the
+// same seed wherever both families hold the drawn sequence: always while their sequence counts are equal (4N <= 1024
+// here), for every arity. Exact.
+BOOST_AUTO_TEST_CASE(pmj02_samples_past_n_are_the_fresh_4n_set) {
+    for (uint32_t n : {4u, 16u, 64u, 256u})
+        for (uint32_t arity = 1; arity <= 3; ++arity) {
+            auto small = makeSampler(STIPPLE_PATTERN_PMJ02, n, 0x4e + arity, {{arity, 1}});
+            auto large = makeSampler(STIPPLE_PATTERN_PMJ02, 4 * n, 0x4e + arity, {{arity, 1}});
+            const stipple::detail::Sampler& sampler = *stipple::detail::fromHandle(small.get());
+            for (uint32_t pixel = 0; pixel < 8; ++pixel) {
+                std::vector<float> past(size_t(4) * n * arity);
+                for (uint32_t i = 0; i < 4 * n; ++i) sampler.sample(pixel, 1, i, 0, past.data() + size_t(i) * arity);
+                const std::vector<float> fresh = fillPixel(large.get(), pixel, 1, 0);
+                BOOST_CHECK_MESSAGE(std::memcmp(fresh.data(), past.data(), fresh.size() * sizeof(float)) == 0,
+                                    "N=" << n << " arity " << arity << " pixel " << pixel);
+            }
+        }
+}
+
 BOOST_AUTO_TEST_CASE(pmj02_sets_above_its_limit_are_a_clear_error) {
     stipple_dimension_desc d = toDesc({2, 2});
     stipple_sampler_desc desc{};
