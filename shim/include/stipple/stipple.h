@@ -31,8 +31,8 @@
  *     of the same scrambled sequence (blocks 0..2^j-1 together are again a net), and pmj02's blocks continue
  *     the set's sequence for 8 blocks of a power-of-two set (sequences of up to 65536 points: a set of 2^16
  *     points has none past it, a set of 2^14 four blocks), then start a fresh set. 4N samples of an N-sample
- *     sobol or pmj02 sampler have the MSE of a fresh 4N set (0.93-1.08x on the integrand battery, N = 16-1024,
- *     shim/POINTSETS.md; pmj02 in 3D 0.91-1.10x, 0.96-1.05x with 2000 sets). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
+ *     sobol or pmj02 sampler have the MSE of a fresh 4N set (0.93-1.03x on the integrand battery, N = 16-1024,
+ *     shim/POINTSETS.md; pmj02's are the fresh 4N set's samples up to 4N = 1024). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
  *     spread; sobol and pmj02 are progressive (README: "Any sample count"). The same for fill_pixel (block 0), sample, stream and stream_fill, with or
  *     without STIPPLE_SAMPLER_FLAG_BLUE_NOISE.
  *   - Every value is a pure function of (seed, pixel x, pixel y, sample index, dimension, value index):
