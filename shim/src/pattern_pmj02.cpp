@@ -5,9 +5,9 @@
 // Each (pixel, dimension) set takes one cached pmj02 sequence (pmj02_family.h: S = 2^storedLog2Length points,
 // S >= 8 L for sets of L = 2^m >= M points, up to 2^16) by hash and serves M consecutive points of it per block:
 // 2D points are (x, y) of that sequence; 1D points its x; 3D points its (x, y, z), z the sequence's depth
-// coordinate (pmj02_generator.h: a digital (0,1)-sequence in the point index that spreads the points of every
-// (x, y) cell over the cell's cubes, so every prefix of 8^r points is a jittered 3D set and every 2^k prefix is
-// stratified in z; the index shuffle below keeps both, as it keeps prefixes). Randomisation, all
+// coordinate (pmj02_generator.h: a digital (0,1)-sequence in the point index that stratifies the points of every
+// (x, y) cell in z, so every 2^k prefix has one point in every 2^-r x 2^-r x 2^-(k-2r) box, a jittered 3D set at
+// 8^r points; the index shuffle below keeps that, as it keeps prefixes). Randomisation, all
 // hashed from the set key:
 // - an index shuffle that keeps every octave [2^j, 2^(j+1)) in place and Owen-scrambles the order inside it, so
 //   every prefix of 2^j points is exactly the sequence's own prefix (a (0,j,2)-net) while two dimensions that

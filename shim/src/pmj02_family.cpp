@@ -29,7 +29,7 @@ const FixedPoint2* Pmj02Family::sequence(uint32_t j) const {
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_acquire)) return data;
     std::lock_guard<std::mutex> lock(slot.mutex);
     if (const FixedPoint2* data = slot.ready.load(std::memory_order_relaxed)) return data;
-    const uint64_t seed = hashCombine(hashCombine(mix64(kPmj02FamilyDomain), storedLog2Length_), j);
+    const uint64_t seed = hashCombine(mix64(kPmj02FamilyDomain), j);
     slot.points = generatePmj02(storedLog2Length_, seed);
     slot.depth = generatePmj02Depth(slot.points, seed);
     for (FixedPoint2& p : slot.points) p = {reverseBits32(p.x), reverseBits32(p.y)}; // the order the scramble takes

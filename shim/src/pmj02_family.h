@@ -5,9 +5,11 @@
 // A family serves sets of up to 2^log2Length points. It holds setCount sequences of 2^storedLog2Length points,
 // up to 8 times longer (at most 2^kMaxLog2Length), so that the blocks of a sampler past N continue one sequence
 // (pmj02 sequences are progressive: every prefix of a power-of-two length is itself a pmj02 set). Sequence j is
-// generated lazily on first use from a seed that depends on (storedLog2Length, j) only, so the content never
-// depends on which thread generated it. Each sequence has its depth coordinate z (generatePmj02Depth) for 3D
-// sets beside it.
+// generated lazily on first use from a seed that depends on j only, so the content never depends on which thread
+// generated it, and sequence j of every family is a prefix of sequence j of every longer family (the generator
+// grows a sequence level by level from per-level seeds, and z does not depend on the length): the first 4N
+// samples of an N-sample set are the points of a fresh 4N-sample set that drew the same j. Each sequence has its
+// depth coordinate z (generatePmj02Depth) for 3D sets beside it.
 // Families live as long as a sampler holds them (the registry keeps weak references).
 #pragma once
 

@@ -7,10 +7,11 @@
 // (every 2^a x 2^(k-a) grid), hence is also stratified in 1D. A pure function of (log2Length, seed).
 //
 // generatePmj02Depth(points, seed) adds a third coordinate z to such a sequence (at most 2^16 points): every
-// prefix of 2^k points is stratified in z at 2^-k, and for every r with 2r <= k its (x, y) cells of side 2^-r
-// spread their 2^(k-2r) points evenly over the cell's cubes of side 2^-r (one per cube at 8^r points: a jittered
-// 3D set); so (x, z) and (y, z) are stratified on the 2^r x 2^r grids with equal counts. They are not one point
-// per cell of the finer 2^q x 2^q grids of a 4^q prefix (that, kept at every q, would put z on a surface).
+// prefix of 2^k points is stratified in z at 2^-k, and for every r with 2r <= k each (x, y) cell of side 2^-r
+// holds 2^(k-2r) points stratified in z at 2^-(k-2r): one point in every 2^-r x 2^-r x 2^-(k-2r) box, so the
+// cubes of side 2^-r hold equal counts (one per cube at 8^r points: a jittered 3D set) and (x, z) and (y, z) are
+// stratified on the 2^r x 2^r grids with equal counts. They are not one point per cell of the finer 2^q x 2^q grids
+// of a 4^q prefix (that, kept at every q, would put z on a surface).
 #pragma once
 
 #include <cstdint>

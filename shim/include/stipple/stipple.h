@@ -31,8 +31,8 @@
  *     of the same scrambled sequence (blocks 0..2^j-1 together are again a net), and pmj02's blocks continue
  *     the set's sequence for 8 blocks of a power-of-two set (sequences of up to 65536 points: a set of 2^16
  *     points has none past it, a set of 2^14 four blocks), then start a fresh set. 4N samples of an N-sample
- *     sobol or pmj02 sampler have the MSE of a fresh 4N set (0.93-1.08x on the integrand battery, N = 16-1024,
- *     shim/POINTSETS.md; pmj02 in 3D 0.96-1.11x, up to 1.19x at N = 1024 in repeated runs). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
+ *     sobol or pmj02 sampler have the MSE of a fresh 4N set (0.93-1.03x on the integrand battery, N = 16-1024,
+ *     shim/POINTSETS.md; pmj02's are the fresh 4N set's samples up to 4N = 1024). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
  *     spread; sobol and pmj02 are progressive (README: "Any sample count"). The same for fill_pixel (block 0), sample, stream and stream_fill, with or
  *     without STIPPLE_SAMPLER_FLAG_BLUE_NOISE.
  *   - Every value is a pure function of (seed, pixel x, pixel y, sample index, dimension, value index):
@@ -92,9 +92,9 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_POISSON_SEED 3u /* the study's dart throwing (Algorithm 1), generated per set */
 #define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, nested uniform), padded per dimension */
 #define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points; 3D:
-                                          * (x, y) as in 2D, z stratified at every 2^k prefix and spread over
-                                          * the cubes of each (x, y) cell (a jittered 3D set at 8^r points; the
-                                          * 2^r x 2^r grids of (x, z), (y, z) hold equal counts; see README) */
+                                          * (x, y) as in 2D, z stratified at every 2^k prefix and inside each
+                                          * (x, y) cell of side 2^-r at 2^-(k-2r) (a jittered 3D set at 8^r
+                                          * points; the 2^r x 2^r grids of (x, z), (y, z) hold equal counts) */
 #define STIPPLE_PATTERN_LATTICE 6u      /* randomly shifted rank-1 lattice sequence, extensible in base 2 */
 #define STIPPLE_PATTERN_HALTON 7u       /* scrambled Halton (bases 2, 3, 5 per set), padded per dimension */
 #define STIPPLE_PATTERN_COUNT 8u
