@@ -144,11 +144,10 @@ BOOST_AUTO_TEST_CASE(one_dimensional_poisson_beats_stratified_on_non_periodic_in
 // stratified on kinks and peaks about a cell wide, where the step 0.809 it used everywhere lost (exact MSE ratios on
 // the Genz kink 1.37, 1.66, 1.46 at N = 16, 24, 32). Two non-periodic integrands of the battery's Genz families at
 // its difficulties, the kink exp(-20.4 |x - u|) and the product peak 1 / (7.25^-2 + (x - u)^2), centres cycling over
-// eight fixed values, N = 16, 24, 32, 4096 pixels per pattern (fixed seed). Exact ratios of the served family
-// (quadrature over the serving's randomisation, shim_poisson1d_steps's method) are 0.84-0.99 here; the check asks
-// for <= 1.25. The log of an MSE ratio estimated from 4096 pixels a side has a standard error of about 0.035
-// (measured over 20 seeds: 0.02-0.05 per case), so 1.25 is more than 5 standard errors above a true ratio of 1.0
-// (one-sided alpha < 1e-7 per case); the former sets' kink ratios would fail it at N = 24 and 32.
+// eight fixed values, N = 16, 24, 32, 4096 pixels per pattern (fixed seed). Measured over 20 seeds: mean ratios
+// 0.41-1.10 (the kink at N = 16 the highest, largest single seed 1.17), the standard deviation of the log ratio
+// 0.020-0.031; the check asks for <= 1.3, more than 5 standard deviations above the highest mean (one-sided alpha
+// < 1e-6 per case). The former sets measured 1.55, 1.36, 1.79 on the kink (N = 16, 24, 32).
 BOOST_AUTO_TEST_CASE(one_dimensional_poisson_holds_against_stratified_at_small_n) {
     constexpr uint32_t kPixels = 4096;
     constexpr double kCentres[8] = {0.137, 0.911, 0.452, 0.608, 0.263, 0.785, 0.034, 0.329};
@@ -180,7 +179,7 @@ BOOST_AUTO_TEST_CASE(one_dimensional_poisson_holds_against_stratified_at_small_n
             };
             const double ratio = mse(STIPPLE_PATTERN_POISSON) / mse(STIPPLE_PATTERN_STRATIFIED);
             BOOST_TEST_MESSAGE("1D " << g.name << " N=" << n << ": poisson / stratified MSE " << ratio);
-            BOOST_CHECK_MESSAGE(ratio <= 1.25, "1D " << g.name << " N=" << n << ": poisson / stratified MSE " << ratio);
+            BOOST_CHECK_MESSAGE(ratio <= 1.3, "1D " << g.name << " N=" << n << ": poisson / stratified MSE " << ratio);
         }
 }
 
