@@ -2,13 +2,13 @@
 // Copyright 2026 The stipple authors
 // pattern_poisson.cpp — serving Poisson-disk sets: "poisson" from the cache, "poisson-seed" generated fresh.
 //
-// A stored "poisson" set is a cell set (one point per cell of a grid aligned with the domain: 1D cellSet1D, 2D
-// pointsets::generateCellLattice) or a toroidal set (3D, and 2D where no cell grid qualifies; poisson_cache.cpp). A cell set
-// is served shifted by a whole number of cells per axis and its offsets rotated inside their cells by a common
-// amount per axis (TorusMap::alignToCells), after reflections (and, on a grid with equal sides, an axis
-// permutation): the domain's faces stay cell faces, so a non-periodic integrand sees no seam, and the cell shift
-// uniform over the grid with the rotation uniform over the cell makes every sample uniform on [0,1)^arity. A
-// toroidal set is moved by a symmetry of the torus and a Cranley-Patterson shift (isometries: rho kept).
+// A stored "poisson" set is a cell set (one point per cell of a grid aligned with the domain: 1D
+// pointsets::generateCellSet1D, 2D pointsets::generateCellLattice) or a toroidal set (3D, and 2D where no cell grid
+// qualifies; poisson_cache.cpp). A cell set is served shifted by a whole number of cells per axis and its offsets
+// rotated inside their cells by a common amount per axis (TorusMap::alignToCells), after reflections (and, on a grid
+// with equal sides, an axis permutation): the domain's faces stay cell faces, so a non-periodic integrand sees no seam,
+// and the cell shift uniform over the grid with the rotation uniform over the cell makes every sample uniform on
+// [0,1)^arity. A toroidal set is moved by a symmetry of the torus and a Cranley-Patterson shift (isometries: rho kept).
 // Order: "poisson" serves the stored order (made progressive by the cache, progressive_order.h) shuffled only
 // within each layer [2^j, 2^(j+1)) (layeredIndex). Every prefix of 2^j points is thus
 // exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
@@ -67,13 +67,13 @@ struct TorusMap : PoissonKernelArgs {
         }
     }
 
-    // 1D "poisson" (pointsets::cellSet1D) keeps one point in each cell [c/n, (c+1)/n) of the domain: the served point
-    // is (c + k + frac(o + tau)) / n for a stored point (c + o) / n, k a whole number of cells and tau a rotation of
-    // the offsets inside their cells, both common to the set. The domain's ends stay cell boundaries (a
-    // non-periodic integrand sees no seam); k uniform over the cells and tau over [0,1) make every point uniform on
-    // [0,1); and the rotation keeps the set's structure, since the offsets' steps from cell to cell are only changed
-    // by whole turns (cellSet1D's steps are all -beta modulo 1). As a torus shift by (k + tau) / n followed by
-    // rotateInsideCells: a shifted point whose offset is now below tau crossed into the next cell and goes back.
+    // 1D "poisson" (pointsets::generateCellSet1D) keeps one point in each cell [c/n, (c+1)/n) of the domain: the served
+    // point is (c + k + frac(o + tau)) / n for a stored point (c + o) / n, k a whole number of cells and tau a rotation
+    // of the offsets inside their cells, both common to the set. The domain's ends stay cell boundaries (a non-periodic
+    // integrand sees no seam); k uniform over the cells and tau over [0,1) make every point uniform on [0,1); and the
+    // rotation keeps the set's structure, since the offsets' steps from cell to cell are only changed by whole turns (a
+    // set's offset steps are all q / n modulo 1). As a torus shift by (k + tau) / n followed by rotateInsideCells: a
+    // shifted point whose offset is now below tau crossed into the next cell and goes back.
     // 2D cell sets (pointsets::generateCellLattice) are served the same way on every axis c, with cells[c]
     // cells: offsets frac(A c) move to frac(A c + tau), which the lattice's rho floor holds for. A reflection before
     // (sign -1) maps cells onto cells as well. Axis c = 0 draws from the hash 1D always used (1D values unchanged).

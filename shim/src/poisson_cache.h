@@ -3,8 +3,9 @@
 // poisson_cache.h — amortised Poisson-disk sets: a bounded, thread-safe cache of toroidal sets per (arity, M).
 //
 // A family holds setCount sets of M points for one arity. Set j is generated lazily, on first use, by
-// pointsets::generateCellLattice (2D, 3D; pointsets::generatePoisson where no cell grid reaches its rho floor, and
-// in 1D) with a seed derived from (arity, M, j) only: the content of the cache is a pure
+// pointsets::generateCellSet1D (1D, set j of its family) or pointsets::generateCellLattice (2D;
+// pointsets::generatePoisson in 3D and where no cell grid reaches its rho floor) with a seed derived from (arity, M,
+// j) only: the content of the cache is a pure
 // function of its key, so results never depend on which thread generated a set first.
 //
 // Bound: the families held by the cache total at most kByteBudget (64 MiB) of point storage, counted at full

@@ -23,9 +23,9 @@
 //     for N >= 16, 2% of seeds in 3D at N = 17 and 20, see POINTSETS.md).
 //  5. Shuffle the order (the relaxation leaves points in cell order).
 //
-// 1D is different (cellSet1D below): one point per cell of width 1/N at a sub-cell position that steps by a fixed
-// irrational-like fraction from cell to cell (rho ~ 0.81), served with whole-cell shifts so that the domain's ends
-// are cell boundaries (no seam for non-periodic integrands).
+// 1D is different (cell_set_1d.cpp): one point per cell of width 1/N at a sub-cell position that steps by a fixed
+// fraction from cell to cell, served with whole-cell shifts so that the domain's ends are cell boundaries (no seam
+// for non-periodic integrands).
 #include "pointsets.h"
 
 #include <algorithm>
@@ -191,51 +191,12 @@ std::vector<float> relaxedSet(uint32_t n, uint64_t seed, const Tuning& tuning) {
     return best;
 }
 
-// 1D: one point in each cell [c/n, (c+1)/n), at the centre of sub-cell sigma(c) of the cell's m sub-cells
-// (m = cellSubdivision1D(n)). Under the served randomisation (a shift by whole cells and a common offset inside the
-// sub-cell, pattern_poisson.cpp) the domain's ends are cell boundaries, so a non-periodic integrand sees no seam,
-// and every point is uniform in its cell because sigma is balanced (every sub-cell index used by n/m cells).
-//
-// sigma is a Weyl sequence: the offset e(c) = sigma(c) / m steps by -beta modulo 1 from cell to cell,
-//   sigma(c) = floor(((c q) mod n) m / n), q = n (1 - beta) rounded to an integer prime to n,
-// so (c q) mod n is a permutation (balanced) and neighbouring cells are (1 - beta) / n apart or more: rho ~ 1 - beta.
-// beta = 1 / (5 + 1/phi) = 0.191 keeps the sawtooth e(c) free of low frequencies: its harmonics j beta mod 1 stay
-// away from 0 for small j (the continued fraction [0; 5, 1, 1, 1, ...]), so on a smooth integrand its error is
-// boundary terms only. Measured against jittered (POINTSETS.md): exp(-x) 0.001-0.12x, an oscillation 0.002-0.68x,
-// a peaked Gaussian 0.001-0.48x, a step 1.0x; offsets drawn independently per cell instead (jittered with a
-// balanced sigma) gave 1.0-1.4x, and a random balanced sigma repaired by swaps to rho >= 0.8 gave 4-15x on the
-// oscillation and the Gaussian (the repair leaves slow drifts in e(c)).
-constexpr double kWeylStep1D = 0.19098300562505258; // 1 / (5 + 1/phi)
-
-std::vector<float> cellSet1D(uint32_t n, uint64_t seed) {
-    const uint32_t m = cellSubdivision1D(n);
-    uint32_t q = uint32_t(std::lround(double(n) * (1.0 - kWeylStep1D)));
-    while (std::gcd(q, n) != 1) ++q;
-    std::vector<float> pts(n);
-    const double fine = double(n) * m;
-    for (uint32_t c = 0; c < n; ++c) {
-        const uint64_t rotated = uint64_t(c) * q % n;
-        const uint64_t sigma = rotated * m / n;
-        pts[c] = float((double(c) * m + double(sigma) + 0.5) / fine); // fine <= 2^23: 1/2-sub-cell resolution
-    }
-    shuffle<1>(pts, n, deriveSeed(seed, 0x5a0ffu));
-    return pts;
-}
-
 } // namespace
-
-uint32_t cellSubdivision1D(uint32_t n) {
-    // The largest divisor m of n with n * m <= 2^23 (sub-cell centres resolved in float). Below 8 sub-cells the
-    // Weyl step cannot be resolved: then m = 1, the shifted lattice.
-    for (uint32_t m = std::min<uint64_t>(n, (uint64_t(1) << 23) / std::max(n, 1u)); m >= 8; --m)
-        if (n % m == 0) return m;
-    return 1;
-}
 
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed) {
     if (n == 0 || n > kMaxPoints || dim < 1 || dim > 3) return {};
+    if (dim == 1) return generateCellSet1D(n, 0, seed);
     uint64_t stream = deriveSeed(seed, 0x9015500u + uint64_t(dim));
-    if (dim == 1) return cellSet1D(n, stream);
     Tuning tuning = tuningFor(dim);
     return dim == 2 ? relaxedSet<2>(n, stream, tuning) : relaxedSet<3>(n, stream, tuning);
 }
