@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
 // poisson1d_steps.cpp — the Weyl steps of the 1D "poisson" families below 64 points (kSmallFamilies1D in
 // src/pointsets/cell_set_1d.cpp), found by a minimax over probe integrands.
 //
