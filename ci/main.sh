@@ -13,6 +13,7 @@ bash ci/install-deps.sh main
 # (the renderer is a library inside it), the Italian city's geometry and the Figure 3 program.
 cmake --preset main
 cmake --build --preset main -j 2
+echo "main: installed and built in $SECONDS s"
 status=0
 build/release/bin/stipple-validate validation/quick.yaml -o report --threads 2 --cache build/stipple-cache || status=$?
 # Figure 3 at 50 sets per N (~10 s); the full 1000-set run is in the README's other commands.
