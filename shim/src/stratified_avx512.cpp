@@ -133,6 +133,21 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
                                             0xf6)); // a | (b ^ c)
 }
 
+// The cell bits of 16 points' cell indices q per axis, as cell[c] << (24 - axisBits[c]) before masking.
+template <uint32_t Arity>
+STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
+    if constexpr (Arity == 1) {
+        // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
+        const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
+        top[0] = _mm512_shuffle_epi8(
+            bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
+    } else if constexpr (Arity == 2) {
+        cells2D(q, top[0], top[1]);
+    } else {
+        cells3D(q, top);
+    }
+}
+
 // The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
 // ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
 template <uint32_t Arity>
@@ -166,14 +181,19 @@ struct BlueStage {
     __m512i jitter[kBlueChunkBlocks][Arity];
 };
 
-// One block of the second pass: `floats` values from out.
+// The offsets' low 32 bits of the strata of 16 points, given their cell bits (as top).
 template <uint32_t Arity>
-STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, const CrossPixelStrata& blue,
-                              const __m512i* topMask, const __m128i* cellShift, const __m128i* jitterShift, float* out,
-                              uint32_t floats) {
+STIPPLE_KERNEL __m512i blockOffsets(const __m512i* top, const __m512i* topMask, const __m128i* cellShift,
+                                    uint64_t offsetKey) {
     __m512i cell[Arity];
     for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
-    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey());
+    return stratumOffsets<Arity>(cell, offsetKey);
+}
+
+// One block of the second pass: `floats` values from out, the strata's offsets given.
+template <uint32_t Arity>
+STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const CrossPixelStrata& blue,
+                              const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
     for (uint32_t c = 0; c < Arity; ++c)
         axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, jitter[c]),
@@ -182,13 +202,18 @@ STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, const C
 }
 
 // With the flag, a block's cell bits and jitter words: staged for the second pass, or, in a one-block call (nothing
-// to overlap), finished at once.
+// to overlap), finished at once. A set of at most 16 points has its offsets per cell index q at hand (smallOffsets,
+// hashed off the block's path of latencies): one permute by q.
 template <uint32_t Arity>
 STIPPLE_KERNEL void blueBlockOrStage(BlueStage<Arity>& stage, uint32_t block, bool oneBlock, const __m512i* top,
-                                     const __m512i* jitter, const CrossPixelStrata& blue, const __m512i* topMask,
-                                     const __m128i* cellShift, const __m128i* jitterShift, float* out,
-                                     uint32_t floats) {
-    if (oneBlock) return blueBlock<Arity>(top, jitter, blue, topMask, cellShift, jitterShift, out, floats);
+                                     const __m512i* jitter, bool small, __m512i smallOffsets, __m512i q,
+                                     const CrossPixelStrata& blue, const __m512i* topMask, const __m128i* cellShift,
+                                     const __m128i* jitterShift, float* out, uint32_t floats) {
+    if (oneBlock) {
+        const __m512i offsets = small ? _mm512_permutexvar_epi32(q, smallOffsets)
+                                      : blockOffsets<Arity>(top, topMask, cellShift, blue.offsetKey());
+        return blueBlock<Arity>(top, jitter, offsets, blue, topMask, jitterShift, out, floats);
+    }
     for (uint32_t c = 0; c < Arity; ++c) {
         stage.top[block][c] = top[c];
         stage.jitter[block][c] = jitter[c];
@@ -218,6 +243,16 @@ template <uint32_t Arity, bool Blue>
         jitterShift16[c] =
             stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
+    // A set of at most 16 points (pointBits <= 4) is one block whose cell indices q are < 16: the offsets of every
+    // q, hashed here in parallel with the block's scramble rather than after it.
+    [[maybe_unused]] const bool small = bits <= 4;
+    [[maybe_unused]] __m512i smallOffsets = _mm512_setzero_si512();
+    if constexpr (Blue)
+        if (small) {
+            __m512i top[Arity];
+            cellTops<Arity>(lanes, top);
+            smallOffsets = blockOffsets<Arity>(top, topMask, cellShift, blue->offsetKey());
+        }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     alignas(64) BlueStage<Arity> stage;
     for (uint32_t chunk = 0; chunk < count; chunk += kBlueChunkBlocks * 16) {
@@ -239,16 +274,13 @@ template <uint32_t Arity, bool Blue>
             float* o = out + size_t(base) * Arity;
             if constexpr (Arity == 1) {
                 // The jitter word is the unmasked scramble (progressivePoint).
-                // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
-                const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
-                const __m512i top = _mm512_shuffle_epi8(
-                    bytes,
-                    _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
+                __m512i top[1];
+                cellTops<1>(q, top);
                 if constexpr (Blue) {
-                    blueBlockOrStage<1>(stage, block, count <= 16, &top, &scrambled, *blue, topMask, cellShift,
-                                        jitterShift, o, floats);
+                    blueBlockOrStage<1>(stage, block, count <= 16, top, &scrambled, small, smallOffsets, q, *blue,
+                                        topMask, cellShift, jitterShift, o, floats);
                 } else {
-                    storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
+                    storeFirst(o, valueOf(top[0], topMask[0], scrambled, jitterShift[0]), floats);
                 }
             } else {
                 // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled
@@ -265,8 +297,8 @@ template <uint32_t Arity, bool Blue>
                         const __m512i top[2] = {top0, top1};
                         __m512i jitter[2];
                         axisJitters<2>(t, jitter);
-                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
-                                                jitterShift, o, floats);
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, small, smallOffsets, q,
+                                                *blue, topMask, cellShift, jitterShift, o, floats);
                         continue;
                     }
                     const __m512 x =
@@ -282,8 +314,8 @@ template <uint32_t Arity, bool Blue>
                     if constexpr (Blue) {
                         __m512i jitter[3];
                         axisJitters<3>(t, jitter);
-                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
-                                                jitterShift, o, floats);
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, small, smallOffsets, q,
+                                                *blue, topMask, cellShift, jitterShift, o, floats);
                         continue;
                     }
                     __m512 axis[3];
@@ -304,9 +336,13 @@ template <uint32_t Arity, bool Blue>
         if constexpr (Blue)
             if (count > 16)
                 for (uint32_t base = chunk; base < chunkEnd; base += 16)
-                    blueBlock<Arity>(stage.top[(base - chunk) / 16], stage.jitter[(base - chunk) / 16], *blue, topMask,
-                                     cellShift, jitterShift, out + size_t(base) * Arity,
+                        {
+                    const __m512i* top = stage.top[(base - chunk) / 16];
+                    blueBlock<Arity>(top, stage.jitter[(base - chunk) / 16],
+                                     blockOffsets<Arity>(top, topMask, cellShift, blue->offsetKey()), *blue, topMask,
+                                     jitterShift, out + size_t(base) * Arity,
                                      (count - base < 16 ? count - base : 16) * Arity);
+                }
     }
 }
 
