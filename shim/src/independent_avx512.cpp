@@ -30,7 +30,7 @@ STIPPLE_KERNEL __m512i dwordsOf(__m512i lo, __m512i hi, int odd) {
 // pointIndependent's value of a jitter word moved into its sub-cell: (word >> 8), exact as a float (< 2^24),
 // times 2^-24.
 template <uint32_t Arity>
-STIPPLE_KERNEL __m512 subCellValue(uint32_t lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
+STIPPLE_KERNEL __m512 subCellValue(__m512i lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
     const __m512i word = jitterInSubCellLanes<Arity>(lattice, offsets, axis, jitter);
     return _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(word, 8)), _mm512_set1_ps(0x1p-24f));
 }
@@ -54,6 +54,8 @@ template <uint32_t Arity>
     const __m512i valueStep = _mm512_set1_epi64(int64_t(16 * Arity * kGolden64));
     const __m512i offsetStep = _mm512_set1_epi64(int64_t(16 * kGolden64));
     const __m512i valueKey = _mm512_set1_epi64(int64_t(key)), offsetKey = _mm512_set1_epi64(int64_t(blue.offsetKey()));
+    __m512i lattice[Arity];
+    for (uint32_t c = 0; c < Arity; ++c) lattice[c] = latticeLanes<Arity>(blue.lattice.c[c]);
     for (uint32_t base = 0; base < count; base += 16) {
         // 1D: the value's counter is the offsets' (p + 1), so the offsets reuse it.
         const __m512i offsets =
@@ -63,7 +65,7 @@ template <uint32_t Arity>
         for (uint32_t c = 0; c < Arity; ++c) {
             const __m512i jitter =
                 dwordsOf(hashAtScaled(valueKey, valueCounter[0][c]), hashAtScaled(valueKey, valueCounter[1][c]), 1);
-            axis[c] = subCellValue<Arity>(blue.lattice.c[c], offsets, c, jitter);
+            axis[c] = subCellValue<Arity>(lattice[c], offsets, c, jitter);
             for (uint32_t h = 0; h < 2; ++h) valueCounter[h][c] = _mm512_add_epi64(valueCounter[h][c], valueStep);
         }
         if constexpr (Arity > 1)

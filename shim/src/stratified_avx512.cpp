@@ -148,26 +148,32 @@ STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
     }
 }
 
-// The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
-// ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
+// The pixel's blue-noise constants on every lane, made once per call: the offsets' key and the lattice values.
 template <uint32_t Arity>
-STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
+struct BlueLanes {
+    __m512i offsetKey;
+    __m512i lattice[Arity];
+};
+
+// The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
+// ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken as the even and the odd dword lanes in 8 64-bit lanes each
+// (a mask and a shift, not widening shuffles), merged back by one in-lane shuffle. 1D: `cell` holds the ids plus 1
+// (the counter's + 1 on 16 lanes at once; ids < 2^22).
+template <uint32_t Arity>
+STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, __m512i offsetKey) {
     __m512i half[2];
     for (int h = 0; h < 2; ++h) {
         __m512i wide[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
-            wide[c] =
-                _mm512_cvtepu32_epi64(h ? _mm512_extracti64x4_epi64(cell[c], 1) : _mm512_castsi512_si256(cell[c]));
+            wide[c] = h ? _mm512_srli_epi64(cell[c], 32) : _mm512_and_si512(cell[c], _mm512_set1_epi64(0xffffffffll));
         __m512i id = wide[0];
         if constexpr (Arity >= 2) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[1], 21));
         if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
-        const __m512i counter =
-            _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)), _mm512_set1_epi64(int64_t(kGolden64)));
-        half[h] = hashAtScaled(_mm512_set1_epi64(int64_t(offsetKey)), counter);
+        if constexpr (Arity >= 2) id = _mm512_add_epi64(id, _mm512_set1_epi64(1));
+        half[h] = hashAtScaled(offsetKey, _mm512_mullo_epi64(id, _mm512_set1_epi64(int64_t(kGolden64))));
     }
-    // The low dwords of both halves in lane order: one permute.
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    return _mm512_permutex2var_epi32(half[0], even, half[1]);
+    // Even lanes' low dwords stay; the odd lanes' move up into the odd dwords.
+    return _mm512_mask_shuffle_epi32(half[0], __mmask16(0xaaaa), half[1], _MM_PERM_CCAA);
 }
 
 // With the flag, the first pass of a chunk of blocks leaves each block's cell bits (as top) and full jitter words
@@ -184,19 +190,25 @@ struct BlueStage {
 // The offsets' low 32 bits of the strata of 16 points, given their cell bits (as top).
 template <uint32_t Arity>
 STIPPLE_KERNEL __m512i blockOffsets(const __m512i* top, const __m512i* topMask, const __m128i* cellShift,
-                                    uint64_t offsetKey) {
+                                    const BlueLanes<Arity>& blue) {
     __m512i cell[Arity];
-    for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
-    return stratumOffsets<Arity>(cell, offsetKey);
+    if constexpr (Arity == 1) {
+        // 1D's top is exactly cell << (24 - bits) (cellTops): no mask.
+        cell[0] = _mm512_add_epi32(_mm512_srl_epi32(top[0], cellShift[0]), _mm512_set1_epi32(1));
+    } else {
+        for (uint32_t c = 0; c < Arity; ++c)
+            cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
+    }
+    return stratumOffsets<Arity>(cell, blue.offsetKey);
 }
 
 // One block of the second pass: `floats` values from out, the strata's offsets given.
 template <uint32_t Arity>
-STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const CrossPixelStrata& blue,
+STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const BlueLanes<Arity>& blue,
                               const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
     for (uint32_t c = 0; c < Arity; ++c)
-        axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, jitter[c]),
+        axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, jitter[c]),
                           jitterShift[c]);
     storeInterleaved<Arity>(out, axis, floats);
 }
@@ -207,11 +219,11 @@ STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i
 template <uint32_t Arity>
 STIPPLE_KERNEL void blueBlockOrStage(BlueStage<Arity>& stage, uint32_t block, bool oneBlock, const __m512i* top,
                                      const __m512i* jitter, bool small, __m512i smallOffsets, __m512i q,
-                                     const CrossPixelStrata& blue, const __m512i* topMask, const __m128i* cellShift,
+                                     const BlueLanes<Arity>& blue, const __m512i* topMask, const __m128i* cellShift,
                                      const __m128i* jitterShift, float* out, uint32_t floats) {
     if (oneBlock) {
         const __m512i offsets = small ? _mm512_permutexvar_epi32(q, smallOffsets)
-                                      : blockOffsets<Arity>(top, topMask, cellShift, blue.offsetKey());
+                                      : blockOffsets<Arity>(top, topMask, cellShift, blue);
         return blueBlock<Arity>(top, jitter, offsets, blue, topMask, jitterShift, out, floats);
     }
     for (uint32_t c = 0; c < Arity; ++c) {
@@ -245,14 +257,18 @@ template <uint32_t Arity, bool Blue>
     }
     // A set of at most 16 points (pointBits <= 4) is one block whose cell indices q are < 16: the offsets of every
     // q, hashed here in parallel with the block's scramble rather than after it.
+    [[maybe_unused]] BlueLanes<Arity> blueLanes;
     [[maybe_unused]] const bool small = bits <= 4;
     [[maybe_unused]] __m512i smallOffsets = _mm512_setzero_si512();
-    if constexpr (Blue)
+    if constexpr (Blue) {
+        blueLanes.offsetKey = _mm512_set1_epi64(int64_t(blue->offsetKey()));
+        for (uint32_t c = 0; c < Arity; ++c) blueLanes.lattice[c] = latticeLanes<Arity>(blue->lattice.c[c]);
         if (small) {
             __m512i top[Arity];
-            cellTops<Arity>(lanes, top);
-            smallOffsets = blockOffsets<Arity>(top, topMask, cellShift, blue->offsetKey());
+            cellTops<Arity>(_mm512_and_si512(lanes, mask), top); // q < 2^bits, as cellTops needs
+            smallOffsets = blockOffsets<Arity>(top, topMask, cellShift, blueLanes);
         }
+    }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     alignas(64) BlueStage<Arity> stage;
     for (uint32_t chunk = 0; chunk < count; chunk += kBlueChunkBlocks * 16) {
@@ -277,7 +293,7 @@ template <uint32_t Arity, bool Blue>
                 __m512i top[1];
                 cellTops<1>(q, top);
                 if constexpr (Blue) {
-                    blueBlockOrStage<1>(stage, block, count <= 16, top, &scrambled, small, smallOffsets, q, *blue,
+                    blueBlockOrStage<1>(stage, block, count <= 16, top, &scrambled, small, smallOffsets, q, blueLanes,
                                         topMask, cellShift, jitterShift, o, floats);
                 } else {
                     storeFirst(o, valueOf(top[0], topMask[0], scrambled, jitterShift[0]), floats);
@@ -298,7 +314,7 @@ template <uint32_t Arity, bool Blue>
                         __m512i jitter[2];
                         axisJitters<2>(t, jitter);
                         blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, small, smallOffsets, q,
-                                                *blue, topMask, cellShift, jitterShift, o, floats);
+                                                blueLanes, topMask, cellShift, jitterShift, o, floats);
                         continue;
                     }
                     const __m512 x =
@@ -315,7 +331,7 @@ template <uint32_t Arity, bool Blue>
                         __m512i jitter[3];
                         axisJitters<3>(t, jitter);
                         blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, small, smallOffsets, q,
-                                                *blue, topMask, cellShift, jitterShift, o, floats);
+                                                blueLanes, topMask, cellShift, jitterShift, o, floats);
                         continue;
                     }
                     __m512 axis[3];
@@ -339,7 +355,7 @@ template <uint32_t Arity, bool Blue>
                         {
                     const __m512i* top = stage.top[(base - chunk) / 16];
                     blueBlock<Arity>(top, stage.jitter[(base - chunk) / 16],
-                                     blockOffsets<Arity>(top, topMask, cellShift, blue->offsetKey()), *blue, topMask,
+                                     blockOffsets<Arity>(top, topMask, cellShift, blueLanes), blueLanes, topMask,
                                      jitterShift, out + size_t(base) * Arity,
                                      (count - base < 16 ? count - base : 16) * Arity);
                 }
