@@ -114,15 +114,16 @@ STIPPLE_KERNEL void cells3D(__m512i q, __m512i top[3]) {
 
 // bits / 2^24 as float (bits < 2^24): the conversion is exact, and scaling an exact nonzero float by 2^-24 lowers
 // its exponent field by 24 (no result is subnormal), an integer subtract instead of a multiply's latency.
-STIPPLE_KERNEL __m512 unitOf(__m512i bits) {
+// (A kernel that keeps the exponent step 24 << 23 in a register passes it.)
+STIPPLE_KERNEL __m512 unitOf(__m512i bits, __m512i exponent24 = _mm512_set1_epi32(24 << 23)) {
     const __m512i f = _mm512_castps_si512(_mm512_cvtepi32_ps(bits));
-    return _mm512_castsi512_ps(
-        _mm512_mask_sub_epi32(f, _mm512_test_epi32_mask(bits, bits), f, _mm512_set1_epi32(24 << 23)));
+    return _mm512_castsi512_ps(_mm512_mask_sub_epi32(f, _mm512_test_epi32_mask(bits, bits), f, exponent24));
 }
 
 // (top & topMask) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
-STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift) {
-    return unitOf(_mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea));
+STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift,
+                              __m512i exponent24 = _mm512_set1_epi32(24 << 23)) {
+    return unitOf(_mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea), exponent24);
 }
 
 // The same with jitter = x ^ (x >> 16) (lowbias32's last step, axisJitterHead): its shift is (x >> s) ^ (x >> (s +
@@ -148,11 +149,13 @@ STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
     }
 }
 
-// The pixel's blue-noise constants on every lane, made once per call: the offsets' key and the lattice values.
+// The pixel's blue-noise constants on every lane, made once per call: the offsets' key and the lattice values, and
+// two constants of the second pass the compiler would otherwise rebuild from immediates in every block.
 template <uint32_t Arity>
 struct BlueLanes {
     __m512i offsetKey;
     __m512i lattice[Arity];
+    __m512i tentMask, exponent24;
 };
 
 // The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
@@ -208,8 +211,9 @@ STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i
                               const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
     for (uint32_t c = 0; c < Arity; ++c)
-        axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, jitter[c]),
-                          jitterShift[c]);
+        axis[c] = valueOf(top[c], topMask[c],
+                          jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, jitter[c], blue.tentMask),
+                          jitterShift[c], blue.exponent24);
     storeInterleaved<Arity>(out, axis, floats);
 }
 
@@ -263,6 +267,9 @@ template <uint32_t Arity, bool Blue>
     if constexpr (Blue) {
         blueLanes.offsetKey = _mm512_set1_epi64(int64_t(blue->offsetKey()));
         for (uint32_t c = 0; c < Arity; ++c) blueLanes.lattice[c] = latticeLanes<Arity>(blue->lattice.c[c]);
+        blueLanes.tentMask = tentMaskLanes<Arity>();
+        blueLanes.exponent24 = _mm512_set1_epi32(24 << 23);
+        asm("" : "+v"(blueLanes.tentMask), "+v"(blueLanes.exponent24)); // kept in registers, not rematerialised
         if (small) {
             __m512i top[Arity];
             cellTops<Arity>(_mm512_and_si512(lanes, mask), top); // q < 2^bits, as cellTops needs
