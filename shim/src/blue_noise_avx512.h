@@ -43,5 +43,35 @@ jitterInSubCellLanes(__m512i lattice, __m512i offsets, uint32_t axis, __m512i ji
     return _mm512_or_si512(tent, _mm512_srli_epi32(jitter, L));
 }
 
+// Arity 2 and 3 (Q = 64; axis a's offset is byte a of `offsets`, its lattice value byte a of latticeBytes): every
+// axis' tent at once. A byte add gives (c + o) mod 64 in each byte's low 6 bits; the tent t = (2c mod 64) xor (63 if
+// c >= 32) is linear over GF(2) in c's bits (t_0 = c_5, t_i = c_(i-1) xor c_5), so one affine map per byte makes
+// it, as t << 2 (bits 2..7 of byte a; the bytes' bits 6 and 7 are ignored).
+constexpr int64_t kTentMatrix = [] {
+    // Output bit i is the parity of byte 7 - i of the matrix ANDed with the input byte.
+    constexpr uint8_t rows[8] = {0, 0, 1u << 5, 0x21, 0x22, 0x24, 0x28, 0x30};
+    uint64_t m = 0;
+    for (int i = 0; i < 8; ++i) m |= uint64_t(rows[i]) << (8 * (7 - i));
+    return int64_t(m);
+}();
+
+// The lattice values of a pixel's axes (arity 2 or 3), byte a = c[a], on every lane.
+[[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline __m512i latticeBytes(const uint32_t* c, uint32_t arity) {
+    return _mm512_set1_epi32(int(c[0] | c[1] << 8 | (arity == 3 ? c[2] << 16 : 0u)));
+}
+
+[[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline __m512i tentBytes(__m512i offsets, __m512i latticeBytes) {
+    return _mm512_gf2p8affine_epi64_epi8(_mm512_add_epi8(offsets, latticeBytes), _mm512_set1_epi64(kTentMatrix), 0);
+}
+
+// jitterInSubCell<Arity>(...) >> 8 for axis `axis` of arity 2 or 3, given tentBytes: the tent in bits 18..23
+// ((t << 26) >> 8), the jitter's top 18 bits below.
+[[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline __m512i subCellWordShifted8(__m512i tents, uint32_t axis,
+                                                                                __m512i jitter) {
+    const __m512i tent = axis == 2 ? tents : _mm512_slli_epi32(tents, 16 - 8 * int(axis));
+    return _mm512_ternarylogic_epi32(tent, _mm512_set1_epi32(0x00fc0000), _mm512_srli_epi32(jitter, 14),
+                                     0xea); // (a & b) | c
+}
+
 } // namespace stipple::detail
 #endif

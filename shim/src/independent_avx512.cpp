@@ -56,16 +56,23 @@ template <uint32_t Arity>
     const __m512i valueKey = _mm512_set1_epi64(int64_t(key)), offsetKey = _mm512_set1_epi64(int64_t(blue.offsetKey()));
     __m512i lattice[Arity];
     for (uint32_t c = 0; c < Arity; ++c) lattice[c] = latticeLanes<Arity>(blue.lattice.c[c]);
+    const __m512i latticePacked = latticeBytes(blue.lattice.c, Arity); // arity 2 and 3: all axes' tents at once
     for (uint32_t base = 0; base < count; base += 16) {
         // 1D: the value's counter is the offsets' (p + 1), so the offsets reuse it.
         const __m512i offsets =
             dwordsOf(hashAtScaled(offsetKey, Arity == 1 ? valueCounter[0][0] : offsetCounter[0]),
                      hashAtScaled(offsetKey, Arity == 1 ? valueCounter[1][0] : offsetCounter[1]), 0);
         __m512 axis[Arity];
+        [[maybe_unused]] __m512i tents;
+        if constexpr (Arity > 1) tents = tentBytes(offsets, latticePacked);
         for (uint32_t c = 0; c < Arity; ++c) {
             const __m512i jitter =
                 dwordsOf(hashAtScaled(valueKey, valueCounter[0][c]), hashAtScaled(valueKey, valueCounter[1][c]), 1);
-            axis[c] = subCellValue<Arity>(lattice[c], offsets, c, jitter);
+            if constexpr (Arity == 1)
+                axis[c] = subCellValue<Arity>(lattice[c], offsets, c, jitter);
+            else
+                axis[c] = _mm512_mul_ps(_mm512_cvtepi32_ps(subCellWordShifted8(tents, c, jitter)),
+                                        _mm512_set1_ps(0x1p-24f));
             for (uint32_t h = 0; h < 2; ++h) valueCounter[h][c] = _mm512_add_epi64(valueCounter[h][c], valueStep);
         }
         if constexpr (Arity > 1)
