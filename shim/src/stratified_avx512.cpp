@@ -154,7 +154,9 @@ STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
 template <uint32_t Arity>
 struct BlueLanes {
     __m512i offsetKey;
-    __m512i lattice[Arity];
+    __m512i lattice[Arity]; // 1D
+    __m512i latticeBytes;   // 2D, 3D (tentBytes)
+    __m128i axisBits[Arity];
     __m512i tentMask, exponent24;
 };
 
@@ -212,12 +214,16 @@ template <uint32_t Arity, bool Staged>
 STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const BlueLanes<Arity>& blue,
                               const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
+    [[maybe_unused]] __m512i tents;
+    if constexpr (Arity > 1) tents = tentBytes(offsets, blue.latticeBytes);
     for (uint32_t c = 0; c < Arity; ++c) {
-        const __m512i bits = _mm512_ternarylogic_epi32(
-            top[c], topMask[c],
-            _mm512_srl_epi32(jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, jitter[c], blue.tentMask),
-                             jitterShift[c]),
-            0xea);
+        // (top & topMask) | (word >> (8 + axisBits)), word the jitter moved into the sub-cell.
+        const __m512i shifted =
+            Arity == 1
+                ? _mm512_srl_epi32(jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, jitter[c], blue.tentMask),
+                                   jitterShift[c])
+                : _mm512_srl_epi32(subCellWordShifted8(tents, c, jitter[c]), blue.axisBits[c]);
+        const __m512i bits = _mm512_ternarylogic_epi32(top[c], topMask[c], shifted, 0xea);
         axis[c] = Staged ? _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f))
                          : unitOf(bits, blue.exponent24);
     }
@@ -273,7 +279,11 @@ template <uint32_t Arity, bool Blue>
     [[maybe_unused]] __m512i smallOffsets = _mm512_setzero_si512();
     if constexpr (Blue) {
         blueLanes.offsetKey = _mm512_set1_epi64(int64_t(blue->offsetKey()));
-        for (uint32_t c = 0; c < Arity; ++c) blueLanes.lattice[c] = latticeLanes<Arity>(blue->lattice.c[c]);
+        for (uint32_t c = 0; c < Arity; ++c) {
+            blueLanes.lattice[c] = latticeLanes<Arity>(blue->lattice.c[c]);
+            blueLanes.axisBits[c] = stipple::detail::count(a.axisBits[c]);
+        }
+        blueLanes.latticeBytes = latticeBytes(blue->lattice.c, Arity);
         blueLanes.tentMask = tentMaskLanes<Arity>();
         blueLanes.exponent24 = _mm512_set1_epi32(24 << 23);
         asm("" : "+v"(blueLanes.tentMask), "+v"(blueLanes.exponent24)); // kept in registers, not rematerialised
