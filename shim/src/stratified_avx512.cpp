@@ -154,9 +154,9 @@ STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
 template <uint32_t Arity>
 struct BlueLanes {
     __m512i offsetKey;
-    __m512i lattice[Arity]; // 1D
-    __m512i latticeBytes;   // 2D, 3D (tentBytes)
-    __m128i axisBits[Arity];
+    __m512i lattice;         // 1D: c on every lane (tent12); 2D, 3D: packed in bytes (tentBytes)
+    __m128i axisBits[Arity]; // 2D, 3D: shift counts
+    __m128i jitterShift20;   // 1D: 20 + bits
     __m512i tentMask, exponent24;
 };
 
@@ -214,16 +214,18 @@ template <uint32_t Arity, bool Staged>
 STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const BlueLanes<Arity>& blue,
                               const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
-    [[maybe_unused]] __m512i tents;
-    if constexpr (Arity > 1) tents = tentBytes(offsets, blue.latticeBytes);
+    const __m512i tents =
+        Arity == 1 ? tent12(offsets, blue.lattice, blue.tentMask) : tentBytes(offsets, blue.lattice);
     for (uint32_t c = 0; c < Arity; ++c) {
-        // (top & topMask) | (word >> (8 + axisBits)), word the jitter moved into the sub-cell.
-        const __m512i shifted =
-            Arity == 1
-                ? _mm512_srl_epi32(jitterInSubCellLanes<Arity>(blue.lattice[c], offsets, c, jitter[c], blue.tentMask),
-                                   jitterShift[c])
-                : _mm512_srl_epi32(subCellWordShifted8(tents, c, jitter[c]), blue.axisBits[c]);
-        const __m512i bits = _mm512_ternarylogic_epi32(top[c], topMask[c], shifted, 0xea);
+        // (top & topMask) | (word >> (8 + axisBits)), word the jitter moved into the sub-cell. 1D: top is exactly the
+        // cell's bits (cellTops) and the word's parts are shifted apart, (t << 20) >> (8 + bits) and
+        // jitter >> (20 + bits): one three-way OR.
+        const __m512i bits =
+            Arity == 1 ? _mm512_ternarylogic_epi32(top[0], _mm512_srl_epi32(tents, jitterShift[0]),
+                                                   _mm512_srl_epi32(jitter[0], blue.jitterShift20), 0xfe)
+                       : _mm512_ternarylogic_epi32(
+                             top[c], topMask[c],
+                             _mm512_srl_epi32(subCellWordShifted8(tents, c, jitter[c]), blue.axisBits[c]), 0xea);
         axis[c] = Staged ? _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f))
                          : unitOf(bits, blue.exponent24);
     }
@@ -279,12 +281,11 @@ template <uint32_t Arity, bool Blue>
     [[maybe_unused]] __m512i smallOffsets = _mm512_setzero_si512();
     if constexpr (Blue) {
         blueLanes.offsetKey = _mm512_set1_epi64(int64_t(blue->offsetKey()));
-        for (uint32_t c = 0; c < Arity; ++c) {
-            blueLanes.lattice[c] = latticeLanes<Arity>(blue->lattice.c[c]);
-            blueLanes.axisBits[c] = stipple::detail::count(a.axisBits[c]);
-        }
-        blueLanes.latticeBytes = latticeBytes(blue->lattice.c, Arity);
-        blueLanes.tentMask = tentMaskLanes<Arity>();
+        blueLanes.lattice =
+            Arity == 1 ? _mm512_set1_epi32(int(blue->lattice.c[0])) : latticeBytes(blue->lattice.c, Arity);
+        for (uint32_t c = 0; c < Arity; ++c) blueLanes.axisBits[c] = stipple::detail::count(a.axisBits[c]);
+        blueLanes.jitterShift20 = stipple::detail::count(20 + a.axisBits[0]); // >= 32 shifts to 0, as in the word
+        blueLanes.tentMask = _mm512_set1_epi32(int(0xfff00000u));
         blueLanes.exponent24 = _mm512_set1_epi32(24 << 23);
         asm("" : "+v"(blueLanes.tentMask), "+v"(blueLanes.exponent24)); // kept in registers, not rematerialised
         if (small) {
