@@ -5,7 +5,6 @@
 
 #include "hash.h"
 
-
 namespace stipple::detail {
 
 namespace {

@@ -50,7 +50,7 @@ constexpr int64_t kTentMatrix = [] {
 // jitterInSubCell's word >> 8 for axis `axis` of arity 2 or 3, given tentBytes: the tent in bits 18..23
 // ((t << 26) >> 8), the jitter's top 18 bits below.
 [[STIPPLE_TARGET_AVX512, gnu::always_inline]] inline __m512i subCellWordShifted8(__m512i tents, uint32_t axis,
-                                                                                __m512i jitter) {
+                                                                                 __m512i jitter) {
     const __m512i tent = axis == 2 ? tents : _mm512_slli_epi32(tents, 16 - 8 * int(axis));
     return _mm512_ternarylogic_epi32(tent, _mm512_set1_epi32(0x00fc0000), _mm512_srli_epi32(jitter, 14),
                                      0xea); // (a & b) | c

@@ -105,8 +105,8 @@ void Sampler::fillBlueNoise(const SetRef& set, const SetKey& pixel, const Dimens
         [[unlikely]] {
         const uint64_t key =
             keyBlock(ops_, streamWord(setKeyFrom(tileSeedKey_, tileX, tileY, set.d), set.streamArity), set.block).key;
-        memo = {&ops_,     tileSeedKey_, tileX, tileY, set.d, set.streamArity, set.block, dim.arity, key,
-                LatticeTile(key, dim.arity, ops_.latticeUse)};
+        memo = {&ops_, tileSeedKey_, tileX, tileY, set.d, set.streamArity, set.block, dim.arity, key, {}};
+        memo.lattice = LatticeTile(key, dim.arity, ops_.latticeUse);
     }
     switch (ops_.blueNoise) {
     case BlueNoiseMode::CrossPixelStrata: {

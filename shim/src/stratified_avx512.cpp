@@ -121,9 +121,8 @@ STIPPLE_KERNEL __m512 unitOf(__m512i bits, __m512i exponent24 = _mm512_set1_epi3
 }
 
 // (top & topMask) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
-STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift,
-                              __m512i exponent24 = _mm512_set1_epi32(24 << 23)) {
-    return unitOf(_mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea), exponent24);
+STIPPLE_KERNEL __m512 valueOf(__m512i top, __m512i topMask, __m512i jitter, __m128i jitterShift) {
+    return unitOf(_mm512_ternarylogic_epi32(top, topMask, _mm512_srl_epi32(jitter, jitterShift), 0xea));
 }
 
 // The same with jitter = x ^ (x >> 16) (lowbias32's last step, axisJitterHead): its shift is (x >> s) ^ (x >> (s +
@@ -149,8 +148,9 @@ STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
     }
 }
 
-// The pixel's blue-noise constants on every lane, made once per call: the offsets' key and the lattice values, and
-// two constants of the second pass the compiler would otherwise rebuild from immediates in every block.
+// The pixel's blue-noise constants on every lane, made once per call (the loops would otherwise reload them from
+// the CrossPixelStrata and broadcast them in every block), with the shift counts and two constants of the second
+// pass that the compiler would otherwise rebuild from immediates in every block.
 template <uint32_t Arity>
 struct BlueLanes {
     __m512i offsetKey;
@@ -163,7 +163,7 @@ struct BlueLanes {
 // The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
 // ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken as the even and the odd dword lanes in 8 64-bit lanes each
 // (a mask and a shift, not widening shuffles), merged back by one in-lane shuffle. 1D: `cell` holds the ids plus 1
-// (the counter's + 1 on 16 lanes at once; ids < 2^22).
+// (the counter's + 1 on 16 lanes at once; a cell index plus 1 fits 32 bits).
 template <uint32_t Arity>
 STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, __m512i offsetKey) {
     __m512i half[2];
@@ -214,8 +214,7 @@ template <uint32_t Arity, bool Staged>
 STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const BlueLanes<Arity>& blue,
                               const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
-    const __m512i tents =
-        Arity == 1 ? tent12(offsets, blue.lattice, blue.tentMask) : tentBytes(offsets, blue.lattice);
+    const __m512i tents = Arity == 1 ? tent12(offsets, blue.lattice, blue.tentMask) : tentBytes(offsets, blue.lattice);
     for (uint32_t c = 0; c < Arity; ++c) {
         // (top & topMask) | (word >> (8 + axisBits)), word the jitter moved into the sub-cell. 1D: top is exactly the
         // cell's bits (cellTops) and the word's parts are shifted apart, (t << 20) >> (8 + bits) and
@@ -226,8 +225,8 @@ STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i
                        : _mm512_ternarylogic_epi32(
                              top[c], topMask[c],
                              _mm512_srl_epi32(subCellWordShifted8(tents, c, jitter[c]), blue.axisBits[c]), 0xea);
-        axis[c] = Staged ? _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f))
-                         : unitOf(bits, blue.exponent24);
+        axis[c] =
+            Staged ? _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f)) : unitOf(bits, blue.exponent24);
     }
     storeInterleaved<Arity>(out, axis, floats);
 }
@@ -241,8 +240,8 @@ STIPPLE_KERNEL void blueBlockOrStage(BlueStage<Arity>& stage, uint32_t block, bo
                                      const BlueLanes<Arity>& blue, const __m512i* topMask, const __m128i* cellShift,
                                      const __m128i* jitterShift, float* out, uint32_t floats) {
     if (oneBlock) {
-        const __m512i offsets = small ? _mm512_permutexvar_epi32(q, smallOffsets)
-                                      : blockOffsets<Arity>(top, topMask, cellShift, blue);
+        const __m512i offsets =
+            small ? _mm512_permutexvar_epi32(q, smallOffsets) : blockOffsets<Arity>(top, topMask, cellShift, blue);
         return blueBlock<Arity, false>(top, jitter, offsets, blue, topMask, jitterShift, out, floats);
     }
     for (uint32_t c = 0; c < Arity; ++c) {
@@ -274,9 +273,9 @@ template <uint32_t Arity, bool Blue>
         jitterShift16[c] =
             stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
+    [[maybe_unused]] BlueLanes<Arity> blueLanes;
     // A set of at most 16 points (pointBits <= 4) is one block whose cell indices q are < 16: the offsets of every
     // q, hashed here in parallel with the block's scramble rather than after it.
-    [[maybe_unused]] BlueLanes<Arity> blueLanes;
     [[maybe_unused]] const bool small = bits <= 4;
     [[maybe_unused]] __m512i smallOffsets = _mm512_setzero_si512();
     if constexpr (Blue) {
@@ -376,13 +375,12 @@ template <uint32_t Arity, bool Blue>
         }
         if constexpr (Blue)
             if (count > 16)
-                for (uint32_t base = chunk; base < chunkEnd; base += 16)
-                        {
+                for (uint32_t base = chunk; base < chunkEnd; base += 16) {
                     const __m512i* top = stage.top[(base - chunk) / 16];
                     blueBlock<Arity, true>(top, stage.jitter[(base - chunk) / 16],
-                                     blockOffsets<Arity>(top, topMask, cellShift, blueLanes), blueLanes, topMask,
-                                     jitterShift, out + size_t(base) * Arity,
-                                     (count - base < 16 ? count - base : 16) * Arity);
+                                           blockOffsets<Arity>(top, topMask, cellShift, blueLanes), blueLanes, topMask,
+                                           jitterShift, out + size_t(base) * Arity,
+                                           (count - base < 16 ? count - base : 16) * Arity);
                 }
     }
 }
