@@ -47,7 +47,7 @@ struct StratifiedSet {
     uint32_t orderSeed; // index shuffle seed (progressive) or permutation seed
     uint32_t valueSeed; // progressive: the value scramble's seed
     uint64_t jitterKey;
-    uint32_t jitterSeed;                   // progressive 2D and 3D: seed of the per-axis 32-bit jitter hash
+    uint32_t jitterSeed; // progressive 2D and 3D: seed of the per-axis 32-bit jitter hash
     uint32_t lineSeed = 0, holeOffset = 0; // padded grids only
 
     StratifiedSet(uint64_t key, const StrataGrid& grid)
@@ -282,10 +282,7 @@ template <uint32_t Arity>
 template <uint32_t Arity>
 void progressiveBatchAvx512(const StratifiedSet& set, const StrataGrid& grid, uint32_t first, uint32_t count,
                             float* out) {
-    const ProgressiveKernelArgs args{set.orderSeed,
-                                     set.valueSeed,
-                                     set.jitterSeed,
-                                     grid.pointBits,
+    const ProgressiveKernelArgs args{set.orderSeed, set.valueSeed, set.jitterSeed, grid.pointBits,
                                      {grid.axisBits[0], grid.axisBits[1], grid.axisBits[2]}};
     progressiveAvx512(args, Arity, first, count, out);
 }
