@@ -5,8 +5,6 @@
 
 #include "hash.h"
 
-#include <utility>
-
 namespace stipple::detail {
 
 namespace {
@@ -55,37 +53,41 @@ constexpr uint64_t kSymmetryIndex = 0x5e77u;
 
 } // namespace
 
-LatticePixel::LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use) {
+// The map of pixel (x, y) is, per axis i, v = row[0] x' + row[1] y' negated or not, with (x', y') the pixel's
+// position swapped and reflected (x' = 63 - x or x): a linear function of (x, y), whose coefficients are found here
+// once per tile. Arithmetic mod 2^32, which Q divides.
+LatticeTile::LatticeTile(uint64_t tileKey, uint32_t arity, LatticeUse use) {
     const LatticeMaps& maps = kMaps[static_cast<uint32_t>(use)];
     // A hashed signed permutation of the pixel axes (swap, then reflect each) and of the value axes (a rotation
     // of the axes, a reflection of each), so tiles and dimensions do not share one grating.
     const uint64_t h = hashAt(tileKey, kSymmetryIndex);
-    constexpr uint32_t kMask = (1u << kBlueNoiseTileLog2) - 1;
-    int32_t x = int32_t(pixelX & kMask), y = int32_t(pixelY & kMask);
-    if (h & 1) std::swap(x, y);
-    if (h & 2) x = int32_t(kMask) - x;
-    if (h & 4) y = int32_t(kMask) - y;
+    constexpr uint32_t kEdge = (1u << kBlueNoiseTileLog2) - 1;
+    // x' = base + step * (swapped ? y : x), likewise y'.
+    const uint32_t xBase = h & 2 ? kEdge : 0, yBase = h & 4 ? kEdge : 0;
+    const uint32_t xStep = h & 2 ? ~0u : 1u, yStep = h & 4 ? ~0u : 1u;
+    const bool swapped = h & 1;
+    const auto set = [&](uint32_t i, const int32_t* row, bool negated) {
+        const uint32_t a = uint32_t(row[0]), b = uint32_t(row[1]), sign = negated ? ~0u : 1u;
+        const uint32_t onX = a * xStep, onY = b * yStep; // coefficients of x' and y' in terms of the swapped axes
+        k0[i] = sign * (a * xBase + b * yBase);
+        kx[i] = sign * (swapped ? onY : onX);
+        ky[i] = sign * (swapped ? onX : onY);
+    };
     if (arity == 1) {
-        const int32_t v = maps.a1[0] * x + maps.a1[1] * y;
-        c[0] = uint32_t((h & 8) ? -v : v) & 4095u;
+        set(0, maps.a1, (h & 8) != 0);
+        mask = 4095u;
         return;
     }
-    // Divisions by the constants 2 and 3, not by `arity` (a 64-bit division on the path of every blue-noise call).
+    mask = 63u;
+    // Divisions by the constants 2 and 3, not by `arity`.
     if (arity == 2) {
         const uint32_t rotation = uint32_t((h >> 8) & 1);
-        for (uint32_t i = 0; i < 2; ++i) {
-            const int32_t* row = maps.a2[i ^ rotation];
-            const int32_t v = row[0] * x + row[1] * y;
-            c[i] = uint32_t((h >> (16 + i)) & 1 ? -v : v) & 63u;
-        }
+        for (uint32_t i = 0; i < 2; ++i) set(i, maps.a2[i ^ rotation], ((h >> (16 + i)) & 1) != 0);
         return;
     }
     const uint32_t rotation = uint32_t((h >> 8) % 3);
-    for (uint32_t i = 0; i < 3; ++i) {
-        const int32_t* row = maps.a3[i + rotation < 3 ? i + rotation : i + rotation - 3];
-        const int32_t v = row[0] * x + row[1] * y;
-        c[i] = uint32_t((h >> (16 + i)) & 1 ? -v : v) & 63u;
-    }
+    for (uint32_t i = 0; i < 3; ++i)
+        set(i, maps.a3[i + rotation < 3 ? i + rotation : i + rotation - 3], ((h >> (16 + i)) & 1) != 0);
 }
 
 void CrossPixelStrata::place(uint64_t stratum, uint32_t arity, uint32_t* jitter) const {

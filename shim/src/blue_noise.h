@@ -37,10 +37,24 @@ enum class LatticeUse : uint32_t {
     Square, // independent: sub-cells of the unit square
 };
 
+// The lattice map of one (tile, dimension, stream, block): c(p) = (k0 + kx x + ky y) mod Q per axis for the pixel
+// (x, y) of the tile, with the tile's hashed signed permutations folded into the coefficients, so that a pixel's
+// values cost no hash (the sampler keeps the tile's map with its key, sampler.cpp).
+struct LatticeTile {
+    uint32_t k0[3] = {0, 0, 0}, kx[3] = {0, 0, 0}, ky[3] = {0, 0, 0};
+    uint32_t mask = 0; // Q - 1
+    LatticeTile() = default;
+    LatticeTile(uint64_t tileKey, uint32_t arity, LatticeUse use);
+};
+
 // The lattice map of one (tile, dimension, stream, block) at one pixel: c(p) without the offset, per axis.
 struct LatticePixel {
     uint32_t c[3] = {0, 0, 0}; // in [0, Q): Q = 64, or 4096 for arity 1
-    LatticePixel(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use);
+    LatticePixel(const LatticeTile& tile, uint32_t pixelX, uint32_t pixelY) {
+        constexpr uint32_t kMask = (1u << kBlueNoiseTileLog2) - 1;
+        const uint32_t x = pixelX & kMask, y = pixelY & kMask;
+        for (uint32_t i = 0; i < 3; ++i) c[i] = (tile.k0[i] + tile.kx[i] * x + tile.ky[i] * y) & tile.mask;
+    }
 };
 
 // Axis `axis` of a jitter (a 32-bit fraction of the stratum) moved into sub-cell tent((c + o) mod Q) of the stratum,
@@ -60,8 +74,8 @@ template <uint32_t Arity>
 struct CrossPixelStrata {
     uint64_t tileKey; // hashed from (seed, pattern, tile, dimension[, stream arity][, block])
     LatticePixel lattice;
-    CrossPixelStrata(uint64_t tileKey, uint32_t pixelX, uint32_t pixelY, uint32_t arity, LatticeUse use)
-        : tileKey(tileKey), lattice(tileKey, pixelX, pixelY, arity, use) {}
+    CrossPixelStrata(uint64_t tileKey, const LatticeTile& tile, uint32_t pixelX, uint32_t pixelY)
+        : tileKey(tileKey), lattice(tile, pixelX, pixelY) {}
     // The key of the tile's per-stratum offsets: a stratum's offsets are hashAt(offsetKey(), stratum id), one mix
     // per point (the ids are distinct per stratum).
     uint64_t offsetKey() const { return tileKey ^ 0x0ff5e75a17ed0001ull; }

@@ -27,12 +27,10 @@ STIPPLE_KERNEL __m512i dwordsOf(__m512i lo, __m512i hi, int odd) {
     return _mm512_permutex2var_epi32(lo, odd ? _mm512_add_epi32(even, _mm512_set1_epi32(1)) : even, hi);
 }
 
-// pointIndependent's value of a jitter word moved into its sub-cell: (word >> 8), exact as a float (< 2^24),
+// pointIndependent's value of a jitter word moved into its sub-cell, given word >> 8 (exact as a float, < 2^24):
 // times 2^-24.
-template <uint32_t Arity>
-STIPPLE_KERNEL __m512 subCellValue(uint32_t lattice, __m512i offsets, uint32_t axis, __m512i jitter) {
-    const __m512i word = jitterInSubCellLanes<Arity>(lattice, offsets, axis, jitter);
-    return _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(word, 8)), _mm512_set1_ps(0x1p-24f));
+STIPPLE_KERNEL __m512 unitOfShifted8(__m512i shifted) {
+    return _mm512_mul_ps(_mm512_cvtepi32_ps(shifted), _mm512_set1_ps(0x1p-24f));
 }
 
 template <uint32_t Arity>
@@ -54,16 +52,24 @@ template <uint32_t Arity>
     const __m512i valueStep = _mm512_set1_epi64(int64_t(16 * Arity * kGolden64));
     const __m512i offsetStep = _mm512_set1_epi64(int64_t(16 * kGolden64));
     const __m512i valueKey = _mm512_set1_epi64(int64_t(key)), offsetKey = _mm512_set1_epi64(int64_t(blue.offsetKey()));
+    // The pixel's lattice values: 1D's on every lane, 2D's and 3D's packed in bytes (tentBytes).
+    const __m512i lattice =
+        Arity == 1 ? _mm512_set1_epi32(int(blue.lattice.c[0])) : latticeBytes(blue.lattice.c, Arity);
+    const __m512i tentMask = _mm512_set1_epi32(int(0xfff00000u));
     for (uint32_t base = 0; base < count; base += 16) {
         // 1D: the value's counter is the offsets' (p + 1), so the offsets reuse it.
         const __m512i offsets =
             dwordsOf(hashAtScaled(offsetKey, Arity == 1 ? valueCounter[0][0] : offsetCounter[0]),
                      hashAtScaled(offsetKey, Arity == 1 ? valueCounter[1][0] : offsetCounter[1]), 0);
         __m512 axis[Arity];
+        const __m512i tents = Arity == 1 ? tent12(offsets, lattice, tentMask) : tentBytes(offsets, lattice);
         for (uint32_t c = 0; c < Arity; ++c) {
             const __m512i jitter =
                 dwordsOf(hashAtScaled(valueKey, valueCounter[0][c]), hashAtScaled(valueKey, valueCounter[1][c]), 1);
-            axis[c] = subCellValue<Arity>(blue.lattice.c[c], offsets, c, jitter);
+            // The word >> 8: 1D (t << 20 | jitter >> 12) >> 8.
+            axis[c] =
+                unitOfShifted8(Arity == 1 ? _mm512_or_si512(_mm512_srli_epi32(tents, 8), _mm512_srli_epi32(jitter, 20))
+                                          : subCellWordShifted8(tents, c, jitter));
             for (uint32_t h = 0; h < 2; ++h) valueCounter[h][c] = _mm512_add_epi64(valueCounter[h][c], valueStep);
         }
         if constexpr (Arity > 1)

@@ -216,12 +216,11 @@ template <uint32_t Arity, bool Blue = false>
             for (uint32_t c = 0; c < Arity; ++c)
                 for (uint32_t i = 0; i < n; ++i) jitter[c][i] = axisJitter(jitterBase(cellKey[i], jitterSeed), c);
         float* o = out + size_t(base) * Arity;
-        for (uint32_t i = 0; i < n; ++i) {
-            // progressiveCell with one reversal of q for all axes: q's bit a * t + c (axis c's bit t from the
-            // top) is bit 31 - a * t - c of r, so compacting r's bits of the right residue mod a lists axis c's
-            // bits from the top, and a shift drops the unused low ones (q's bits past pointBits are zero).
-            const uint32_t r = reverse32(q[i]);
-            uint32_t cell[3];
+        // progressiveCell with one reversal of q for all axes: q's bit a * t + c (axis c's bit t from the top) is bit
+        // 31 - a * t - c of r, so compacting r's bits of the right residue mod a lists axis c's bits from the top,
+        // and a shift drops the unused low ones (q's bits past pointBits are zero).
+        const auto cellsOf = [&](uint32_t qi, uint32_t* cell) {
+            const uint32_t r = reverse32(qi);
             if constexpr (Arity == 1) {
                 cell[0] = (r >> (31 - axisBits[0])) >> 1;
             } else if constexpr (Arity == 2) {
@@ -232,14 +231,34 @@ template <uint32_t Arity, bool Blue = false>
                 cell[1] = compactEvery3(r >> 3) >> (10 - axisBits[1]);
                 cell[2] = compactEvery3(r >> 2) >> (10 - axisBits[2]);
             }
-            if constexpr (Blue) {
-                uint64_t stratum = cell[0];
-                if constexpr (Arity >= 2) stratum ^= uint64_t(cell[1]) << 21;
-                if constexpr (Arity == 3) stratum ^= uint64_t(cell[2]) << 42;
-                const uint64_t offsets = hashAt(offsetKey, stratum);
-                for (uint32_t c = 0; c < Arity; ++c)
-                    jitter[c][i] = jitterInSubCell<Arity>(lattice[c], offsets, c, jitter[c][i]);
+        };
+        if constexpr (Blue) {
+            // The cells, the offsets' 64-bit hashes in a loop of their own (the compiler vectorises it as it does
+            // independent's), then the moves into the sub-cells and the floats.
+            alignas(64) uint32_t cells[3][kChunk];
+            alignas(64) uint64_t stratum[kChunk];
+            alignas(64) uint32_t offsets[kChunk];
+            for (uint32_t i = 0; i < n; ++i) {
+                uint32_t cell[3];
+                cellsOf(q[i], cell);
+                for (uint32_t c = 0; c < Arity; ++c) cells[c][i] = cell[c];
+                stratum[i] = cell[0];
+                if constexpr (Arity >= 2) stratum[i] ^= uint64_t(cell[1]) << 21;
+                if constexpr (Arity == 3) stratum[i] ^= uint64_t(cell[2]) << 42;
             }
+            for (uint32_t i = 0; i < n; ++i) offsets[i] = static_cast<uint32_t>(hashAt(offsetKey, stratum[i]));
+            for (uint32_t c = 0; c < Arity; ++c)
+                for (uint32_t i = 0; i < n; ++i)
+                    jitter[c][i] = (cells[c][i] << topShift[c]) |
+                                   (jitterInSubCell<Arity>(lattice[c], offsets[i], c, jitter[c][i]) >> jitterShift[c]);
+            for (uint32_t i = 0; i < n; ++i)
+                for (uint32_t c = 0; c < Arity; ++c)
+                    o[size_t(i) * Arity + c] = static_cast<float>(static_cast<int32_t>(jitter[c][i])) * 0x1p-24f;
+            continue;
+        }
+        for (uint32_t i = 0; i < n; ++i) {
+            uint32_t cell[3];
+            cellsOf(q[i], cell);
             for (uint32_t c = 0; c < Arity; ++c)
                 o[size_t(i) * Arity + c] = static_cast<float>(static_cast<int32_t>((cell[c] << topShift[c]) |
                                                                                    (jitter[c][i] >> jitterShift[c]))) *

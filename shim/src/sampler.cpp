@@ -24,14 +24,16 @@ constexpr HashDomain tileDomain(HashDomain pattern) {
     return static_cast<HashDomain>(static_cast<uint64_t>(pattern) ^ static_cast<uint64_t>(HashDomain::BlueNoiseTile));
 }
 
-// The key of a blue-noise tile, memoised per thread. Hosts ask for the pixels of a tile row one after another (64
-// per tile row), each dimension in turn; without the memo the key's chain of 64-bit mixes lies on the path of every
-// call, longer than the pixel's own key. A pure function of the fields compared, so a stale entry is never used.
+// The key of a blue-noise tile and its lattice map, memoised per thread. Hosts ask for the pixels of a tile row one
+// after another (64 per tile row), each dimension in turn; without the memo the key's chain of 64-bit mixes and the
+// map's hash lie on the path of every call, longer than the pixel's own key. A pure function of the fields
+// compared, so a stale entry is never used.
 struct TileKeyMemo {
-    const PatternOps* ops = nullptr; // its block keying
+    const PatternOps* ops = nullptr; // its block keying and lattice use
     uint64_t tileSeedKey = 0;
-    uint32_t tileX = 0, tileY = 0, d = 0, streamArity = 0, block = 0;
+    uint32_t tileX = 0, tileY = 0, d = 0, streamArity = 0, block = 0, arity = 0;
     uint64_t key = 0;
+    LatticeTile lattice;
 };
 constexpr uint32_t kTileKeyMemoEntries = 8; // picked by dimension and stream arity
 thread_local TileKeyMemo tileKeyMemo[kTileKeyMemoEntries];
@@ -99,14 +101,16 @@ void Sampler::fillBlueNoise(const SetRef& set, const SetKey& pixel, const Dimens
     const uint32_t tileX = set.pixelX >> kBlueNoiseTileLog2, tileY = set.pixelY >> kBlueNoiseTileLog2;
     TileKeyMemo& memo = tileKeyMemo[(set.d + set.streamArity) % kTileKeyMemoEntries];
     if (memo.ops != &ops_ || memo.tileSeedKey != tileSeedKey_ || memo.tileX != tileX || memo.tileY != tileY ||
-        memo.d != set.d || memo.streamArity != set.streamArity || memo.block != set.block) {
+        memo.d != set.d || memo.streamArity != set.streamArity || memo.block != set.block || memo.arity != dim.arity)
+        [[unlikely]] {
         const uint64_t key =
             keyBlock(ops_, streamWord(setKeyFrom(tileSeedKey_, tileX, tileY, set.d), set.streamArity), set.block).key;
-        memo = {&ops_, tileSeedKey_, tileX, tileY, set.d, set.streamArity, set.block, key};
+        memo = {&ops_, tileSeedKey_, tileX, tileY, set.d, set.streamArity, set.block, dim.arity, key, {}};
+        memo.lattice = LatticeTile(key, dim.arity, ops_.latticeUse);
     }
     switch (ops_.blueNoise) {
     case BlueNoiseMode::CrossPixelStrata: {
-        const CrossPixelStrata strata(memo.key, set.pixelX, set.pixelY, dim.arity, ops_.latticeUse);
+        const CrossPixelStrata strata(memo.key, memo.lattice, set.pixelX, set.pixelY);
         return fillStrata_(pixel, dim, first, count, out, strata);
     }
     case BlueNoiseMode::Unsupported: break; // refused at creation (sampler_create.cpp)

@@ -114,10 +114,10 @@ STIPPLE_KERNEL void cells3D(__m512i q, __m512i top[3]) {
 
 // bits / 2^24 as float (bits < 2^24): the conversion is exact, and scaling an exact nonzero float by 2^-24 lowers
 // its exponent field by 24 (no result is subnormal), an integer subtract instead of a multiply's latency.
-STIPPLE_KERNEL __m512 unitOf(__m512i bits) {
+// (A kernel that keeps the exponent step 24 << 23 in a register passes it.)
+STIPPLE_KERNEL __m512 unitOf(__m512i bits, __m512i exponent24 = _mm512_set1_epi32(24 << 23)) {
     const __m512i f = _mm512_castps_si512(_mm512_cvtepi32_ps(bits));
-    return _mm512_castsi512_ps(
-        _mm512_mask_sub_epi32(f, _mm512_test_epi32_mask(bits, bits), f, _mm512_set1_epi32(24 << 23)));
+    return _mm512_castsi512_ps(_mm512_mask_sub_epi32(f, _mm512_test_epi32_mask(bits, bits), f, exponent24));
 }
 
 // (top & topMask) | (jitter >> (8 + axisBits)) as float: exact (< 2^24), as in progressivePoint.
@@ -133,26 +133,52 @@ STIPPLE_KERNEL __m512 valueOfHead(__m512i top, __m512i topMask, __m512i x, __m12
                                             0xf6)); // a | (b ^ c)
 }
 
-// The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
-// ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken in two halves of 8 64-bit lanes.
+// The cell bits of 16 points' cell indices q per axis, as cell[c] << (24 - axisBits[c]) before masking.
 template <uint32_t Arity>
-STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, uint64_t offsetKey) {
+STIPPLE_KERNEL void cellTops(__m512i q, __m512i (&top)[Arity]) {
+    if constexpr (Arity == 1) {
+        // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
+        const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
+        top[0] = _mm512_shuffle_epi8(
+            bytes, _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
+    } else if constexpr (Arity == 2) {
+        cells2D(q, top[0], top[1]);
+    } else {
+        cells3D(q, top);
+    }
+}
+
+// The pixel's blue-noise constants on every lane, made once per call (the loops would otherwise reload them from
+// the CrossPixelStrata and broadcast them in every block), with the shift counts and two constants of the second
+// pass that the compiler would otherwise rebuild from immediates in every block.
+template <uint32_t Arity>
+struct BlueLanes {
+    __m512i offsetKey;
+    __m512i lattice;         // 1D: c on every lane (tent12); 2D, 3D: packed in bytes (tentBytes)
+    __m128i axisBits[Arity]; // 2D, 3D: shift counts
+    __m128i jitterShift20;   // 1D: 20 + bits
+    __m512i tentMask, exponent24;
+};
+
+// The low 32 bits of hashAt(offsetKey, stratum) per point, the stratum id of 16 points' cells
+// ((cell[2] << 42) ^ (cell[1] << 21) ^ cell[0]) taken as the even and the odd dword lanes in 8 64-bit lanes each
+// (a mask and a shift, not widening shuffles), merged back by one in-lane shuffle. 1D: `cell` holds the ids plus 1
+// (the counter's + 1 on 16 lanes at once; a cell index plus 1 fits 32 bits).
+template <uint32_t Arity>
+STIPPLE_KERNEL __m512i stratumOffsets(const __m512i* cell, __m512i offsetKey) {
     __m512i half[2];
     for (int h = 0; h < 2; ++h) {
         __m512i wide[Arity];
         for (uint32_t c = 0; c < Arity; ++c)
-            wide[c] =
-                _mm512_cvtepu32_epi64(h ? _mm512_extracti64x4_epi64(cell[c], 1) : _mm512_castsi512_si256(cell[c]));
+            wide[c] = h ? _mm512_srli_epi64(cell[c], 32) : _mm512_and_si512(cell[c], _mm512_set1_epi64(0xffffffffll));
         __m512i id = wide[0];
         if constexpr (Arity >= 2) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[1], 21));
         if constexpr (Arity == 3) id = _mm512_xor_si512(id, _mm512_slli_epi64(wide[2], 42));
-        const __m512i counter =
-            _mm512_mullo_epi64(_mm512_add_epi64(id, _mm512_set1_epi64(1)), _mm512_set1_epi64(int64_t(kGolden64)));
-        half[h] = hashAtScaled(_mm512_set1_epi64(int64_t(offsetKey)), counter);
+        if constexpr (Arity >= 2) id = _mm512_add_epi64(id, _mm512_set1_epi64(1));
+        half[h] = hashAtScaled(offsetKey, _mm512_mullo_epi64(id, _mm512_set1_epi64(int64_t(kGolden64))));
     }
-    // The low dwords of both halves in lane order: one permute.
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    return _mm512_permutex2var_epi32(half[0], even, half[1]);
+    // Even lanes' low dwords stay; the odd lanes' move up into the odd dwords.
+    return _mm512_mask_shuffle_epi32(half[0], __mmask16(0xaaaa), half[1], _MM_PERM_CCAA);
 }
 
 // With the flag, the first pass of a chunk of blocks leaves each block's cell bits (as top) and full jitter words
@@ -166,29 +192,58 @@ struct BlueStage {
     __m512i jitter[kBlueChunkBlocks][Arity];
 };
 
-// One block of the second pass: `floats` values from out.
+// The offsets' low 32 bits of the strata of 16 points, given their cell bits (as top).
 template <uint32_t Arity>
-STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, const CrossPixelStrata& blue,
-                              const __m512i* topMask, const __m128i* cellShift, const __m128i* jitterShift, float* out,
-                              uint32_t floats) {
+STIPPLE_KERNEL __m512i blockOffsets(const __m512i* top, const __m512i* topMask, const __m128i* cellShift,
+                                    const BlueLanes<Arity>& blue) {
     __m512i cell[Arity];
-    for (uint32_t c = 0; c < Arity; ++c) cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
-    const __m512i offsets = stratumOffsets<Arity>(cell, blue.offsetKey());
+    if constexpr (Arity == 1) {
+        // 1D's top is exactly cell << (24 - bits) (cellTops): no mask.
+        cell[0] = _mm512_add_epi32(_mm512_srl_epi32(top[0], cellShift[0]), _mm512_set1_epi32(1));
+    } else {
+        for (uint32_t c = 0; c < Arity; ++c)
+            cell[c] = _mm512_srl_epi32(_mm512_and_si512(top[c], topMask[c]), cellShift[c]);
+    }
+    return stratumOffsets<Arity>(cell, blue.offsetKey);
+}
+
+// One block of the second pass: `floats` values from out, the strata's offsets given.
+// (Staged blocks are bound by throughput, not latency: there the float is made with a multiply, one instruction less
+// than unitOf's exponent step; the same value.)
+template <uint32_t Arity, bool Staged>
+STIPPLE_KERNEL void blueBlock(const __m512i* top, const __m512i* jitter, __m512i offsets, const BlueLanes<Arity>& blue,
+                              const __m512i* topMask, const __m128i* jitterShift, float* out, uint32_t floats) {
     __m512 axis[Arity];
-    for (uint32_t c = 0; c < Arity; ++c)
-        axis[c] = valueOf(top[c], topMask[c], jitterInSubCellLanes<Arity>(blue.lattice.c[c], offsets, c, jitter[c]),
-                          jitterShift[c]);
+    const __m512i tents = Arity == 1 ? tent12(offsets, blue.lattice, blue.tentMask) : tentBytes(offsets, blue.lattice);
+    for (uint32_t c = 0; c < Arity; ++c) {
+        // (top & topMask) | (word >> (8 + axisBits)), word the jitter moved into the sub-cell. 1D: top is exactly the
+        // cell's bits (cellTops) and the word's parts are shifted apart, (t << 20) >> (8 + bits) and
+        // jitter >> (20 + bits): one three-way OR.
+        const __m512i bits =
+            Arity == 1 ? _mm512_ternarylogic_epi32(top[0], _mm512_srl_epi32(tents, jitterShift[0]),
+                                                   _mm512_srl_epi32(jitter[0], blue.jitterShift20), 0xfe)
+                       : _mm512_ternarylogic_epi32(
+                             top[c], topMask[c],
+                             _mm512_srl_epi32(subCellWordShifted8(tents, c, jitter[c]), blue.axisBits[c]), 0xea);
+        axis[c] =
+            Staged ? _mm512_mul_ps(_mm512_cvtepi32_ps(bits), _mm512_set1_ps(0x1p-24f)) : unitOf(bits, blue.exponent24);
+    }
     storeInterleaved<Arity>(out, axis, floats);
 }
 
 // With the flag, a block's cell bits and jitter words: staged for the second pass, or, in a one-block call (nothing
-// to overlap), finished at once.
+// to overlap), finished at once. A set of at most 16 points has its offsets per cell index q at hand (smallOffsets,
+// hashed off the block's path of latencies): one permute by q.
 template <uint32_t Arity>
 STIPPLE_KERNEL void blueBlockOrStage(BlueStage<Arity>& stage, uint32_t block, bool oneBlock, const __m512i* top,
-                                     const __m512i* jitter, const CrossPixelStrata& blue, const __m512i* topMask,
-                                     const __m128i* cellShift, const __m128i* jitterShift, float* out,
-                                     uint32_t floats) {
-    if (oneBlock) return blueBlock<Arity>(top, jitter, blue, topMask, cellShift, jitterShift, out, floats);
+                                     const __m512i* jitter, bool small, __m512i smallOffsets, __m512i q,
+                                     const BlueLanes<Arity>& blue, const __m512i* topMask, const __m128i* cellShift,
+                                     const __m128i* jitterShift, float* out, uint32_t floats) {
+    if (oneBlock) {
+        const __m512i offsets =
+            small ? _mm512_permutexvar_epi32(q, smallOffsets) : blockOffsets<Arity>(top, topMask, cellShift, blue);
+        return blueBlock<Arity, false>(top, jitter, offsets, blue, topMask, jitterShift, out, floats);
+    }
     for (uint32_t c = 0; c < Arity; ++c) {
         stage.top[block][c] = top[c];
         stage.jitter[block][c] = jitter[c];
@@ -218,6 +273,26 @@ template <uint32_t Arity, bool Blue>
         jitterShift16[c] =
             stipple::detail::count(24 + a.axisBits[c]); // a count >= 32 shifts to 0, as x >> (24 + axisBits) is
     }
+    [[maybe_unused]] BlueLanes<Arity> blueLanes;
+    // A set of at most 16 points (pointBits <= 4) is one block whose cell indices q are < 16: the offsets of every
+    // q, hashed here in parallel with the block's scramble rather than after it.
+    [[maybe_unused]] const bool small = bits <= 4;
+    [[maybe_unused]] __m512i smallOffsets = _mm512_setzero_si512();
+    if constexpr (Blue) {
+        blueLanes.offsetKey = _mm512_set1_epi64(int64_t(blue->offsetKey()));
+        blueLanes.lattice =
+            Arity == 1 ? _mm512_set1_epi32(int(blue->lattice.c[0])) : latticeBytes(blue->lattice.c, Arity);
+        for (uint32_t c = 0; c < Arity; ++c) blueLanes.axisBits[c] = stipple::detail::count(a.axisBits[c]);
+        blueLanes.jitterShift20 = stipple::detail::count(20 + a.axisBits[0]); // >= 32 shifts to 0, as in the word
+        blueLanes.tentMask = _mm512_set1_epi32(int(0xfff00000u));
+        blueLanes.exponent24 = _mm512_set1_epi32(24 << 23);
+        asm("" : "+v"(blueLanes.tentMask), "+v"(blueLanes.exponent24)); // kept in registers, not rematerialised
+        if (small) {
+            __m512i top[Arity];
+            cellTops<Arity>(_mm512_and_si512(lanes, mask), top); // q < 2^bits, as cellTops needs
+            smallOffsets = blockOffsets<Arity>(top, topMask, cellShift, blueLanes);
+        }
+    }
     const uint32_t orderSeed = a.orderSeed, valueSeed = a.valueSeed; // in registers across the stores
     alignas(64) BlueStage<Arity> stage;
     for (uint32_t chunk = 0; chunk < count; chunk += kBlueChunkBlocks * 16) {
@@ -239,16 +314,13 @@ template <uint32_t Arity, bool Blue>
             float* o = out + size_t(base) * Arity;
             if constexpr (Arity == 1) {
                 // The jitter word is the unmasked scramble (progressivePoint).
-                // cell << (24 - bits) is reverse32(q) >> 8 (q < 2^bits): the bytes of q reversed and moved down by one.
-                const __m512i bytes = _mm512_gf2p8affine_epi64_epi8(q, _mm512_set1_epi64(0x8040201008040201ll), 0);
-                const __m512i top = _mm512_shuffle_epi8(
-                    bytes,
-                    _mm512_broadcast_i32x4(_mm_setr_epi8(2, 1, 0, -1, 6, 5, 4, -1, 10, 9, 8, -1, 14, 13, 12, -1)));
+                __m512i top[1];
+                cellTops<1>(q, top);
                 if constexpr (Blue) {
-                    blueBlockOrStage<1>(stage, block, count <= 16, &top, &scrambled, *blue, topMask, cellShift,
-                                        jitterShift, o, floats);
+                    blueBlockOrStage<1>(stage, block, count <= 16, top, &scrambled, small, smallOffsets, q, blueLanes,
+                                        topMask, cellShift, jitterShift, o, floats);
                 } else {
-                    storeFirst(o, valueOf(top, topMask[0], scrambled, jitterShift[0]), floats);
+                    storeFirst(o, valueOf(top[0], topMask[0], scrambled, jitterShift[0]), floats);
                 }
             } else {
                 // jitterBase of pattern_stratified.cpp: u = t ^ (t >> 16) with t = (s << 2) ^ seed, s the shuffled
@@ -265,8 +337,8 @@ template <uint32_t Arity, bool Blue>
                         const __m512i top[2] = {top0, top1};
                         __m512i jitter[2];
                         axisJitters<2>(t, jitter);
-                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
-                                                jitterShift, o, floats);
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, small, smallOffsets, q,
+                                                blueLanes, topMask, cellShift, jitterShift, o, floats);
                         continue;
                     }
                     const __m512 x =
@@ -282,8 +354,8 @@ template <uint32_t Arity, bool Blue>
                     if constexpr (Blue) {
                         __m512i jitter[3];
                         axisJitters<3>(t, jitter);
-                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, *blue, topMask, cellShift,
-                                                jitterShift, o, floats);
+                        blueBlockOrStage<Arity>(stage, block, count <= 16, top, jitter, small, smallOffsets, q,
+                                                blueLanes, topMask, cellShift, jitterShift, o, floats);
                         continue;
                     }
                     __m512 axis[3];
@@ -303,10 +375,13 @@ template <uint32_t Arity, bool Blue>
         }
         if constexpr (Blue)
             if (count > 16)
-                for (uint32_t base = chunk; base < chunkEnd; base += 16)
-                    blueBlock<Arity>(stage.top[(base - chunk) / 16], stage.jitter[(base - chunk) / 16], *blue, topMask,
-                                     cellShift, jitterShift, out + size_t(base) * Arity,
-                                     (count - base < 16 ? count - base : 16) * Arity);
+                for (uint32_t base = chunk; base < chunkEnd; base += 16) {
+                    const __m512i* top = stage.top[(base - chunk) / 16];
+                    blueBlock<Arity, true>(top, stage.jitter[(base - chunk) / 16],
+                                           blockOffsets<Arity>(top, topMask, cellShift, blueLanes), blueLanes, topMask,
+                                           jitterShift, out + size_t(base) * Arity,
+                                           (count - base < 16 ? count - base : 16) * Arity);
+                }
     }
 }
 
