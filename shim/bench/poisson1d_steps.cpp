@@ -21,6 +21,8 @@
 // table and each n's ratios (about a minute on one core).
 //
 // stipple-link: shared
+#include "battery_integrands.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -34,17 +36,8 @@
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-struct Rng {
-    uint64_t state;
-    double next() {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return double((z ^ (z >> 31)) >> 11) * 0x1p-53;
-    }
-};
+using stipple::battery::detail::kPi;
+using Rng = stipple::battery::detail::ParameterRng; // SplitMix64, as the battery's parameters
 
 struct ProbeClass {
     std::string name;
