@@ -10,6 +10,9 @@
 # The asan tree is also the fuzzing tree (ci/fuzz.sh runs its libFuzzer harnesses): one clang build instead of a
 # gcc one for the tests and a clang one for the fuzzers, 345 CPU-seconds instead of 685. libFuzzer's coverage
 # counters are limited to the fuzzed parsers (cmake/fuzz_coverage.txt), so the shim's kernels run at ASan speed.
+# clang links its sanitizer runtimes into executables only, so every executable of the asan tree also links the C++
+# half of UBSan's (-fsanitize-link-c++-runtime -lstdc++): a C host that dlopens libstipple needs it for the
+# library's vptr checks.
 # Each stage builds only the targets its tests run (ci/test-targets.sh), not the whole tree.
 # Any sanitizer report fails the test it happens in (halt_on_error / abort_on_error), hence this script.
 #
