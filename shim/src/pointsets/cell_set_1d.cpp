@@ -116,9 +116,7 @@ std::vector<float> generateCellSet1D(uint32_t n, uint32_t setIndex, uint64_t see
         const uint64_t sigma = rotated * m / n;
         pts[c] = float((double(c) * m + double(sigma) + 0.5) / fine); // fine <= 2^23: 1/2-sub-cell resolution
     }
-    // Fisher-Yates: hosts get no spatial order to trip on.
-    SplitMix64 rng(deriveSeed(stream, 0x5a0ffu));
-    for (uint32_t i = n; i > 1; --i) std::swap(pts[i - 1], pts[rng.uniformBelow(i)]);
+    shufflePoints<1>(pts, n, deriveSeed(stream, 0x5a0ffu));
     return pts;
 }
 

@@ -63,16 +63,6 @@ constexpr int kCancelEvery = 5;
 // Retries of a set that misses `accept`; tiny sets cost nothing, so they get more tries at their optimum.
 inline int maxAttempts(uint32_t n) { return n < 16 ? 32 : n < 128 ? 16 : 4; }
 
-// Fisher-Yates: the relaxation leaves points in cell order; hosts get no spatial order to trip on.
-template <int D>
-void shuffle(std::vector<float>& pts, uint32_t n, uint64_t seed) {
-    SplitMix64 rng(seed);
-    for (uint32_t i = n; i > 1; --i) {
-        uint32_t j = rng.uniformBelow(i);
-        for (int k = 0; k < D; ++k) std::swap(pts[size_t(i - 1) * D + k], pts[size_t(j) * D + k]);
-    }
-}
-
 // The start: one uniform point per cell of a grid of at least n cells, as near cubic as N allows (a power of
 // two splits its bits evenly: 2:1 cells for N = 2 * 4^k in 2D). Cells beyond n stay empty, chosen at random:
 // vacancies at evenly spaced cell indices would line up along a diagonal, a density wave the smooth
@@ -187,7 +177,7 @@ std::vector<float> relaxedSet(uint32_t n, uint64_t seed, const Tuning& tuning) {
             break;
         }
     }
-    shuffle<D>(best, n, deriveSeed(seed, 0x5a0ffu));
+    shufflePoints<D>(best, n, deriveSeed(seed, 0x5a0ffu)); // the relaxation leaves points in cell order
     return best;
 }
 

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace stipple::detail::pointsets {
 
@@ -38,6 +40,16 @@ private:
 // Seeds of independent streams derived from one seed: the stream id is mixed in, not added.
 inline uint64_t deriveSeed(uint64_t seed, uint64_t stream) {
     return mix64(seed ^ mix64(stream + 0x632be59bd9b4e019ull));
+}
+
+// Fisher-Yates over the first n points of D floats each, from its own stream: a served set carries no spatial order
+// a host could trip on.
+template <int D> void shufflePoints(std::vector<float>& pts, uint32_t n, uint64_t seed) {
+    SplitMix64 rng(seed);
+    for (uint32_t i = n; i > 1; --i) {
+        const uint32_t j = rng.uniformBelow(i);
+        for (int k = 0; k < D; ++k) std::swap(pts[size_t(i - 1) * D + k], pts[size_t(j) * D + k]);
+    }
 }
 
 } // namespace stipple::detail::pointsets
