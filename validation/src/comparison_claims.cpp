@@ -167,7 +167,8 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                     v.comparison = comparePatterns(rows, s, v.a, v.b, k.spp, ri, k.flipMetric, k.equalTime, margin);
                     v.status = statusFor(k.expect, v.comparison);
                     // The plain MSE ratio beside: what the weights and the cap changed. In an equal-time comparison it
-                    // is still per CPU second, so it moves with the run's timing as the main figure does.
+                    // is still per CPU second and, uncapped, near 1 its interval's end moves with the run's timing: it
+                    // is shown without a verdict word there, since only the main figure decides.
                     const Comparison plain =
                         k.flipMetric ? Comparison{}
                                      : comparePatterns(rows, s, v.a, v.b, k.spp, ri, false, k.equalTime, margin, false);
@@ -179,9 +180,9 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                         ratioText(v.comparison).c_str(), verdictName(v.comparison.verdict), v.comparison.dof,
                         k.flipMetric
                             ? ""
-                            : fmt("; plain MSE%s %s %s", k.equalTime ? " × CPU s" : "", ratioText(plain).c_str(),
-                                  verdictName(plain.verdict))
-                                  .c_str(),
+                            : k.equalTime ? fmt("; plain MSE × CPU s %s", ratioText(plain).c_str()).c_str()
+                                          : fmt("; plain MSE %s %s", ratioText(plain).c_str(), verdictName(plain.verdict))
+                                                .c_str(),
                         v.status == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v.status)).c_str()));
                     o.verdicts.push_back(v);
                 }
