@@ -12,6 +12,7 @@ machine's load falls on both alike; per pattern, arity, N and call the median of
 ratio after / before. With --bound, exit status 1 when a ratio exceeds it. ARGS after "--" go to shim_abi_cost
 (e.g. --patterns sobol).
 """
+import argparse
 import os
 import statistics
 import subprocess
@@ -30,25 +31,15 @@ def run(binary, lib_dir, args):
 
 def main(argv):
     args, passthrough = (argv[: argv.index("--")], argv[argv.index("--") + 1:]) if "--" in argv else (argv, [])
-    runs, bound = 5, None
-    positional = []
-    i = 0
-    while i < len(args):
-        if args[i] in ("--runs", "--bound"):
-            if i + 1 >= len(args):
-                sys.exit(f"abi_cost_compare: {args[i]} needs a value")
-            value = args[i + 1]
-            if args[i] == "--runs":
-                runs = int(value)
-            else:
-                bound = float(value)
-            i += 2
-        else:
-            positional.append(args[i])
-            i += 1
-    if len(positional) != 3:
-        sys.exit(__doc__)
-    binary, before_dir, after_dir = positional
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("binary")
+    parser.add_argument("before_dir")
+    parser.add_argument("after_dir")
+    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--bound", type=float)
+    options = parser.parse_args(args)
+    binary, before_dir, after_dir, runs, bound = (options.binary, options.before_dir, options.after_dir, options.runs,
+                                                  options.bound)
     for d in (before_dir, after_dir):
         if not os.path.exists(os.path.join(d, "libstipple.so.1")):
             sys.exit(f"abi_cost_compare: no libstipple.so.1 in {d}")

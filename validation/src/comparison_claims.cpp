@@ -169,20 +169,21 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                     // The plain MSE ratio beside: what the weights and the cap changed. In an equal-time comparison it
                     // is still per CPU second and, uncapped, near 1 its interval's end moves with the run's timing: it
                     // is shown without a verdict word there, since only the main figure decides.
-                    const Comparison plain =
-                        k.flipMetric ? Comparison{}
-                                     : comparePatterns(rows, s, v.a, v.b, k.spp, ri, false, k.equalTime, margin, false);
+                    std::string plainText;
+                    if (!k.flipMetric) {
+                        const Comparison plain =
+                            comparePatterns(rows, s, v.a, v.b, k.spp, ri, false, k.equalTime, margin, false);
+                        plainText = k.equalTime ? fmt("; plain MSE × CPU s %s", ratioText(plain).c_str())
+                                                : fmt("; plain MSE %s %s", ratioText(plain).c_str(),
+                                                      verdictName(plain.verdict));
+                    }
                     if (v.status == CheckStatus::Fail || (v.status == CheckStatus::NotSeparated && o.status == CheckStatus::Pass))
                         o.status = v.status;
                     o.figures.push_back(fmt(
                         "%s %s: %s/%s %s %s (dof %.0f)%s%s", s.name.c_str(),
                         v.region.empty() ? "whole image" : v.region.c_str(), v.a.c_str(), v.b.c_str(),
                         ratioText(v.comparison).c_str(), verdictName(v.comparison.verdict), v.comparison.dof,
-                        k.flipMetric
-                            ? ""
-                            : k.equalTime ? fmt("; plain MSE × CPU s %s", ratioText(plain).c_str()).c_str()
-                                          : fmt("; plain MSE %s %s", ratioText(plain).c_str(), verdictName(plain.verdict))
-                                                .c_str(),
+                        plainText.c_str(),
                         v.status == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v.status)).c_str()));
                     o.verdicts.push_back(v);
                 }
