@@ -81,9 +81,9 @@ def blocks_of(path):
         if m:
             mark = (m.group(1), m.group(2).lstrip("-— ").strip())
         elif line.strip():
-            paragraph = paragraph + [line] if paragraph else [line]
-        else:
-            paragraph = paragraph if mark else []
+            # The paragraph last written before a block introduces it (a blank line ends it, a new one
+            # replaces it).
+            paragraph = paragraph + [line] if i > 0 and lines[i - 1].strip() else [line]
         i += 1
     return blocks
 
@@ -159,7 +159,7 @@ def main():
             path = path.resolve()
             env = {k: v for k, v in os.environ.items() if not k.startswith("STIPPLE_")}
             env["HOME"] = str(scratch / "home")
-            env["PATH"] = "/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
+            # The reader's PATH as it is (another python3 may come first: the README names its interpreter).
             env.pop("PYTHONPATH", None)
             log = []
             for block in blocks_of(path):
@@ -190,7 +190,7 @@ def main():
                     continue
                 for command in commands:
                     if mark and mark[0] == "exists":
-                        program = shlex.split(command)[0]
+                        program = shlex.split(command, comments=True)[0]
                         ok = os.access(scratch / program, os.X_OK) or shutil.which(program, path=env["PATH"])
                         status = "exists" if ok else "FAIL"
                         print(f"{status:6s} {block.where()}: {program} ({mark[1]})")
