@@ -20,6 +20,7 @@ main_packages=(
   libboost-dev            # Boost.Math (statistics/)
   gnuplot-nox             # the report's and Figure 3's plots
   openimageio-tools       # OpenImageIO's CMake config names its tools (/usr/bin/iconvert ...): configure fails without them
+  libcpp-httplib-dev pkg-config  # stipple-validate --serve-study (the perceptual experiment's votes)
 )
 test_packages=(
   libboost-test-dev
@@ -33,6 +34,7 @@ test_packages=(
   slurm-wlm slurmctld slurmd slurm-client munge # validation.slurm_array_equals_single_run
   python3-venv python3-pip python3-setuptools python3-wheel   # the Python package: its tests and the offline pip install
   python3-scipy           # the Python package's scipy.stats.qmc adapter and its test
+  python3-selenium chromium-driver              # validation.perceptual_browser: simulated observers
 )
 
 list_only=0

@@ -14,6 +14,9 @@ const char* const kValidateUsage =
     "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
     "                        [--shard i/n] [--references-only] [--quiet] [--merge DIR1 DIR2 ...]\n"
     "                        [--allow-renderer | --renderer PROGRAM]\n"
+    "                        [--study FOLDER]\n"
+    "       stipple-validate --serve-study FOLDER [--port N]\n"
+    "       stipple-validate --analyse-study FOLDER [VOTES.json | VOTES-FOLDER ...]\n"
     "       stipple-validate --version | --help\n"
     "Runs the matrix's scenes x patterns x spp x seeds, measures RMS against cached references and render time,\n"
     "checks the matrix's claims and writes an HTML report. An option's value may follow as the next argument or\n"
@@ -33,6 +36,12 @@ const char* const kValidateUsage =
     "                     no program)\n"
     "  --renderer PROGRAM run PROGRAM as the external renderer, in place of the program of the matrix's commands\n"
     "                     (default: none)\n"
+    "  --study FOLDER     a perceptual experiment folder (made by a run of a matrix with 'perceptual'): its votes/\n"
+    "                     fill the report's perceptual block and Figure 8 (default: none)\n"
+    "  --serve-study FOLDER  serve the experiment on 127.0.0.1 and store each observer's votes in FOLDER/votes\n"
+    "  --port N           --serve-study's port, 0..65535 (default: 8765; 0: any free port)\n"
+    "  --analyse-study FOLDER  scale FOLDER/votes (and any votes files or folders given after it) and write\n"
+    "                     FOLDER/analysis/\n"
     "  -q, --quiet        no progress, tables or summary: only warnings, errors and the exit status (default: off)\n"
     "  -h, --help         this text; --version: the version line\n"
     "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
@@ -105,6 +114,19 @@ Args parseArgs(const std::vector<std::string>& argv) {
             a.allowRenderer = true;
         } else if (s == "--renderer") {
             a.renderer = value();
+        } else if (s == "--study") {
+            a.study = value();
+        } else if (s == "--serve-study") {
+            a.serveStudy = value();
+        } else if (s == "--port") {
+            const std::string v = value();
+            char* end = nullptr;
+            const long p = std::strtol(v.c_str(), &end, 10);
+            if (*end || p < 0 || p > 65535) throw UsageError("--port: expected a port in [0, 65535], got '" + v + "'");
+            a.port = int(p);
+        } else if (s == "--analyse-study") {
+            a.analyseStudy = value();
+            while (i + 1 < argc && !argv[i + 1].empty() && argv[i + 1][0] != '-') a.extraVotes.push_back(argv[++i]);
         } else if (s == "--merge") {
             if (attached) a.merge.push_back(value());
             while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) {
@@ -120,6 +142,11 @@ Args parseArgs(const std::vector<std::string>& argv) {
             a.matrix = s;
         else
             throw UsageError("unexpected argument '" + s + "' (the matrix is '" + a.matrix + "')");
+    }
+    if (!a.serveStudy.empty() || !a.analyseStudy.empty()) {
+        if (!a.matrix.empty() || (!a.serveStudy.empty() && !a.analyseStudy.empty()))
+            throw UsageError("--serve-study and --analyse-study take an experiment folder only, one of them");
+        return a;
     }
     if (a.matrix.empty()) throw UsageError("no matrix file given");
     if (!a.merge.empty() && (a.shardCount > 1 || a.referencesOnly))

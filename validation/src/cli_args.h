@@ -28,6 +28,12 @@ struct Args {
     // External renderers (a matrix's 'renderer'): run the matrix's own command, or this program in its place.
     bool allowRenderer = false;
     std::string renderer;
+    // The perceptual experiment (validation/src/perceptual/): its votes in the report, serving it, analysing it.
+    std::string study;        // --study FOLDER: the report's perceptual block from FOLDER's votes
+    std::string serveStudy;   // --serve-study FOLDER
+    int port = 8765;          // --port for --serve-study (0: any free port)
+    std::string analyseStudy; // --analyse-study FOLDER [VOTES...]
+    std::vector<std::string> extraVotes;
 };
 
 // argv without the program name. Throws UsageError.

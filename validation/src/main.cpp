@@ -29,6 +29,10 @@
 #include "results.h"
 #include "runner.h"
 #include "verdicts_report.h"
+#include "perceptual/experiment.h"
+#include "perceptual/study_report.h"
+#include "perceptual/study_server.h"
+#include "perceptual/votes.h"
 
 #include <stipple/render/renderer.h>
 #include <stipple/version.h>
@@ -64,6 +68,18 @@ int main(int argc, char** argv) {
         std::cout.setstate(std::ios::badbit);
         if (!std::freopen("/dev/null", "w", stdout)) std::fclose(stdout);
         Progress::setQuiet(true);
+    }
+    if (!args.serveStudy.empty()) return serveStudy(args.serveStudy, args.port);
+    if (!args.analyseStudy.empty()) return analyseStudyCommand(args.analyseStudy, args.extraVotes);
+    if (!args.study.empty()) {
+        // Bad votes are found now, not after the renders.
+        try {
+            const StudyKey key = loadStudyKey(args.study);
+            loadVotes({(fs::path(args.study) / kStudyVotesDir).string()}, key);
+        } catch (const std::exception& e) {
+            std::cerr << "stipple-validate: --study: " << e.what() << "\n";
+            return kExitUsage;
+        }
     }
     Matrix matrix;
     try {
@@ -146,6 +162,8 @@ int main(int argc, char** argv) {
             in.baseline = &baseline;
             in.baselinePath = args.baseline;
         }
+        in.studyDir = args.study;
+        if (args.merge.empty() && !shard) writeStudyExperiment(reportDir, matrix, results);
         writeReport(reportDir, in);
         staging->publish();
 

@@ -537,6 +537,63 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
 }
 
 } // namespace
+// perceptual: { trials, repeats, controls, control_spp, margin, sets: [{ scene, region, patterns, spp }] }
+void parsePerceptual(const Parser& P, const yaml::Node& croot, Matrix& m) {
+    const yaml::Node p = croot["perceptual"];
+    if (!p) return;
+    P.expectMap(p, "perceptual");
+    P.onlyKeys(p, {"trials", "repeats", "controls", "control_spp", "margin", "sets"}, "perceptual");
+    PerceptualPlan& plan = m.perceptual;
+    auto count = [&](const char* key, int lo, int hi, int& out) {
+        if (!p[key]) return;
+        const long long v = P.get<long long>(p[key], key);
+        if (v < lo || v > hi)
+            P.fail(p[key], std::string(key) + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                               "], got " + p[key].Scalar());
+        out = int(v);
+    };
+    auto matrixSpp = [&](const yaml::Node& n, const std::string& what) {
+        const uint32_t v = P.spp(n, what);
+        if (std::find(m.spp.begin(), m.spp.end(), v) == m.spp.end()) P.fail(n, what + " must be one of the matrix's spp");
+        return v;
+    };
+    count("trials", 1, 10, plan.trials);
+    count("controls", 1, 10, plan.controls);
+    plan.controlSpp = p["control_spp"] ? matrixSpp(p["control_spp"], "control_spp") : m.spp.front();
+    if (p["margin"]) plan.margin = P.positive(p["margin"], "margin");
+    const yaml::Node sets = p["sets"];
+    if (!sets || !sets.IsSequence() || sets.size() == 0) P.fail(sets ? sets : p, "perceptual needs a list of sets");
+    for (const auto& n : sets) {
+        P.expectMap(n, "a perceptual set");
+        P.onlyKeys(n, {"scene", "region", "patterns", "spp"}, "a perceptual set");
+        PerceptualSet s;
+        s.where = P.yaml.where(n);
+        for (const char* key : {"scene", "region", "patterns", "spp"})
+            if (!n[key]) P.fail(n, std::string("a perceptual set needs '") + key + "'");
+        s.scene = P.get<std::string>(n["scene"], "scene");
+        const MatrixScene* scene = m.findScene(s.scene);
+        if (!scene) P.fail(n["scene"], "unknown scene '" + s.scene + "'");
+        s.region = P.get<std::string>(n["region"], "region");
+        if (std::none_of(scene->regions.begin(), scene->regions.end(), [&](const Region& r) { return r.name == s.region; }))
+            P.fail(n["region"], "scene '" + s.scene + "' has no region '" + s.region + "'");
+        const yaml::Node patterns = n["patterns"];
+        if (!patterns.IsSequence() || patterns.size() < 2 || patterns.size() > 4)
+            P.fail(patterns, "patterns must be a list of 2 to 4 of the matrix's patterns");
+        for (const auto& q : patterns) {
+            const std::string name = P.get<std::string>(q, "pattern");
+            if (std::find(m.patterns.begin(), m.patterns.end(), name) == m.patterns.end())
+                P.fail(q, "pattern '" + name + "' is not one of the matrix's patterns");
+            if (std::find(s.patterns.begin(), s.patterns.end(), name) != s.patterns.end())
+                P.fail(q, "pattern '" + name + "' is named twice");
+            s.patterns.push_back(name);
+        }
+        s.spp = matrixSpp(n["spp"], "spp");
+        if (s.spp <= plan.controlSpp)
+            P.fail(n["spp"], "a set's spp must be above control_spp (the control, at fewer samples, is the known worst)");
+        plan.sets.push_back(s);
+    }
+    count("repeats", 0, int(plan.sets.size()) * plan.trials, plan.repeats);
+}
 
 Matrix parseMatrix(const std::string& text, const std::string& path, const MatrixVocabulary& vocabulary) {
     Parser P{yaml::StrictYaml(path), vocabulary};
@@ -551,7 +608,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     P.onlyKeys(
         croot,
         {"name", "cache", "threads", "scenes", "patterns", "spp", "seeds", "reference", "crop", "baseline", "checks",
-         "renderer"},
+         "renderer", "perceptual"},
         "the matrix");
 
     Matrix m;
@@ -577,6 +634,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     parseCrop(P, croot, m);
     parseBaseline(P, croot, m);
     parseChecks(P, croot, m);
+    parsePerceptual(P, croot, m);
     return m;
 }
 

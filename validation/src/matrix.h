@@ -94,6 +94,24 @@ struct Check {
     bool failFails = true; // fails_run: false makes a FAIL a finding that does not fail the run
 };
 
+// The perceptual experiment (validation/src/perceptual/): test sets of one region's crops, each at the set's spp
+// and the first seed, ranked by people; a control adds the set's first pattern at control spp (known: worst).
+struct PerceptualSet {
+    std::string scene, region;
+    std::vector<std::string> patterns; // 2-4, distinct, of the matrix
+    uint32_t spp = 0;                  // one of the matrix's
+    std::string where;                 // file:line:column in the matrix
+};
+
+struct PerceptualPlan {
+    std::vector<PerceptualSet> sets; // empty: no experiment
+    int trials = 1;                  // showings of each set per observer
+    int repeats = 1;                 // set trials shown a second time (consistency)
+    int controls = 2;                // control trials
+    uint32_t controlSpp = 0;         // 0: the matrix's smallest spp
+    double margin = 0.5;             // JOD: a pair within ±margin (90% interval) is equivalent
+};
+
 struct Matrix {
     std::string path; // the matrix file as given
     std::string text; // its full text, shown in the report
@@ -108,6 +126,7 @@ struct Matrix {
     CropSettings crop;
     double baselineTimeFactor = 1.5; // --baseline: a cell's median seconds may grow by this factor
     std::vector<Check> checks;
+    PerceptualPlan perceptual;
 
     const MatrixScene* findScene(const std::string& name) const;
 };

@@ -26,6 +26,7 @@ struct ReportInputs {
     double wallSeconds = 0; // of the whole run (0 when merged)
     std::string note;       // e.g. "merged from 2 shard folders"
     std::string reportDir;  // the folder being written (set by writeReport): files the page links are checked there
+    std::string studyDir;   // --study: a perceptual experiment folder whose votes/ fill the perceptual block
 };
 
 // File-name-safe form of a scene or pattern name.

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "efficiency.h"
+#include "perceptual/study_report.h"
 #include "comparison_claims.h"
 #include "efficiency_claims.h"
 #include "equivalence.h"
@@ -253,7 +254,7 @@ std::string verdictHeadlineHtml(const ReportInputs& in) {
       << ". The study's Figure 3 (generation time against N), made by <code>ci/main.sh</code> after this report: "
          "<a href=\"figure3/figure3.png\" data-made-after=\"1\">figure3/figure3.png</a>, "
          "<a href=\"figure3/summary.md\" data-made-after=\"1\">its tables</a>.</p></div>\n";
-    o << studyTableHtml(in);
+    o << studyTableHtml(in) << perceptualStudyHtml(in);
     o << "<h2 id=\"best\">Best pattern per scene at " << m.spp.back()
       << " spp (whole image)</h2>\n<div class=\"wide\"><table><tr><th>scene</th><th>per sample (least "
          "error)</th><th>at "

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The stipple authors
+
+#include "study_report.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "../results.h"
+#include "../text.h"
+#include "../verdicts_report.h"
+#include "experiment.h"
+
+namespace stipple::validation {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string gq(const std::string& s) {
+    std::string o = "'";
+    for (char c : s) o += c == '\'' ? std::string("''") : std::string(1, c);
+    return o + "'";
+}
+
+// gnuplot `script` in `dir`, stderr to <script>.log there, no shell. Returns its exit status or -1.
+int runGnuplotScript(const std::string& dir, const std::string& script) {
+    const pid_t pid = fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        if (chdir(dir.c_str()) != 0) _exit(126);
+        const int log = open((script + ".log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (log >= 0) dup2(log, STDERR_FILENO);
+        execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string plotStem(size_t set) { return "perceptual-set-" + std::to_string(set + 1); }
+
+// One plot per set: each pattern's JOD (relative to the set's first) with its 95% bootstrap interval.
+bool writeStudyPlots(const std::string& plotsDir, const StudyKey& key, const StudyAnalysis& a) {
+    fs::create_directories(plotsDir);
+    std::string script;
+    for (size_t si = 0; si < key.sets.size(); ++si) {
+        const StudySet& set = key.sets[si];
+        const SetAnalysis& sa = a.sets[si];
+        std::ostringstream dat;
+        dat << "# index pattern jod lo95 hi95\n";
+        for (size_t i = 0; i < set.crops.size(); ++i)
+            dat << i << " " << gq(set.crops[i].pattern) << " " << fmt("%.9g %.9g %.9g", sa.score[i], sa.lo95[i], sa.hi95[i])
+                << "\n";
+        const std::string stem = plotStem(si);
+        writeTextFile((fs::path(plotsDir) / (stem + ".dat")).string(), dat.str());
+        double lo = -0.5, hi = 0.5;
+        for (size_t i = 0; i < set.crops.size(); ++i) {
+            lo = std::min(lo, sa.lo95[i]);
+            hi = std::max(hi, sa.hi95[i]);
+        }
+        script += "reset\nset terminal pngcairo size 420,320 enhanced font ',10'\nset output " + gq(stem + ".png") +
+                  "\nset title " + gq(set.name + fmt(", %u spp", set.spp)) + " noenhanced\n" +
+                  "set ylabel 'quality, JOD (95% interval over observers)'\nset grid ytics\nunset key\n" +
+                  fmt("set xrange [-0.5:%zu.5]\nset yrange [%g:%g]\n", set.crops.size() - 1, lo - 0.3, hi + 0.3) +
+                  "set xtics noenhanced\nset arrow from -0.5,0 to " + fmt("%zu.5", set.crops.size() - 1) +
+                  ",0 nohead dt 2 lc rgb '#888888'\nplot ";
+        for (size_t i = 0; i < set.crops.size(); ++i)
+            script += (i ? ", " : "") + gq(stem + ".dat") + fmt(" every ::%zu::%zu using 1:3:4:5:xtic(2)", i, i) +
+                      " with yerrorbars pt 7 ps 1.4 lw 2 lc rgb " + gq(patternColor(set.crops[i].pattern));
+        script += "\nunset output\n";
+    }
+    writeTextFile((fs::path(plotsDir) / "perceptual.gp").string(), script);
+    const int rc = runGnuplotScript(plotsDir, "perceptual.gp");
+    if (rc != 0)
+        std::cerr << "stipple-validate: gnuplot failed on the perceptual plots (exit " << rc << "); see " << plotsDir
+                  << "/perceptual.gp.log\n";
+    return rc == 0;
+}
+
+std::string verdictCell(const StudySet& set, const PairVerdict& p) {
+    std::string word = pairVerdictName(p.verdict);
+    if (p.verdict == PairVerdictKind::PreferredA) word = set.crops[p.a].pattern + " PREFERRED";
+    if (p.verdict == PairVerdictKind::PreferredB) word = set.crops[p.b].pattern + " PREFERRED";
+    return fmt("%+.2f JOD <small>(%+.2f – %+.2f)</small><br><strong>%s</strong><br><small>%d observers; decided "
+               "at ~%s</small>",
+               p.difference, p.lo95, p.hi95, html(word).c_str(), p.observers,
+               p.observersNeeded ? std::to_string(p.observersNeeded).c_str() : "?");
+}
+
+} // namespace
+
+std::string studyFigureHtml(const StudyKey& key, const StudyAnalysis& a, const std::string& plotsDir,
+                            const std::string& plotsHref) {
+    const bool plotted = writeStudyPlots(plotsDir, key, a);
+    std::ostringstream o;
+    o << "<div class=\"wide\"><table class=\"study\" id=\"perceptual-verdicts\"><tr><th>test set</th><th>pair A / B</th>"
+         "<th>people: A − B (95%), verdict</th><th>mean FLIP A / B</th></tr>\n";
+    for (size_t si = 0; si < key.sets.size(); ++si)
+        for (const auto& p : a.sets[si].pairs) {
+            const StudySet& set = key.sets[si];
+            const StudyCrop &ca = set.crops[p.a], &cb = set.crops[p.b];
+            o << "<tr><td>" << html(set.name) << fmt(", %u spp", set.spp) << "</td><td>" << patternHeader(ca.pattern)
+              << " / " << patternHeader(cb.pattern) << "</td><td class=\"v\">" << verdictCell(set, p) << "</td><td>"
+              << (std::isfinite(ca.flip) && std::isfinite(cb.flip) && cb.flip > 0 ? fmt("%.3g×", ca.flip / cb.flip)
+                                                                                  : std::string("–"))
+              << "</td></tr>\n";
+        }
+    o << "</table></div>\n<p class=\"note\">People's quality scale from rankings (Thurstone Case V by maximum "
+         "likelihood; 1 JOD: 75% of observers prefer the better), 95% percentile bootstrap interval over the kept "
+         "observers ("
+      << a.bootstrapSamples << " resamples, seed " << a.seed
+      << "). <strong>PREFERRED</strong>: the interval excludes 0; <strong>EQUIVALENT</strong>: the 90% interval lies "
+         "within ±"
+      << fmt("%g", key.margin)
+      << " JOD; else <strong>NOT SEPARATED</strong>. <em>decided at</em>: the observers a decided verdict would need "
+         "at the measured difference (80% power).</p>\n";
+    o << "<h3 id=\"figure-8\">The study's Figure 8, redone</h3>\n<div class=\"grid\">";
+    for (size_t si = 0; si < key.sets.size(); ++si) {
+        const StudySet& set = key.sets[si];
+        const SetAnalysis& sa = a.sets[si];
+        o << "<figure>";
+        if (plotted)
+            o << "<img src=\"" << plotsHref << "/" << plotStem(si) << ".png\" alt=\"" << html(set.name)
+              << ": people's JOD per pattern with 95% intervals\">";
+        o << "<table><tr><th>pattern</th><th>JOD (95%)</th><th>mean FLIP</th><th>RMS</th></tr>";
+        for (size_t i = 0; i < set.crops.size(); ++i)
+            o << "<tr><td>" << patternHeader(set.crops[i].pattern) << "</td><td>"
+              << fmt("%+.2f <small>(%+.2f – %+.2f)</small>", sa.score[i], sa.lo95[i], sa.hi95[i]) << "</td><td>"
+              << fmt("%.4f", set.crops[i].flip) << "</td><td>" << fmt("%.4g", set.crops[i].rms) << "</td></tr>";
+        o << "</table><figcaption>" << html(set.name) << fmt(", %u spp; ", set.spp) << sa.observers
+          << " observers; Kendall τ of people's order with FLIP's " << fmt("%.2f", sa.kendallFlip) << ", with RMS's "
+          << fmt("%.2f", sa.kendallRms) << "</figcaption></figure>";
+    }
+    o << "</div>\n<p class=\"note\" id=\"perceptual-agreement\">People and mean FLIP order "
+      << fmt("%.0f%%", 100 * a.agreementFlip) << " of " << a.agreementPairs << " pairs the same way (RMS: "
+      << fmt("%.0f%%", 100 * a.agreementRms) << "). Observers: ";
+    for (size_t i = 0; i < a.screens.size(); ++i) {
+        const auto& s = a.screens[i];
+        o << (i ? ", " : "") << html(s.observer) << (s.excluded ? " (<strong>excluded</strong>: " + html(s.reason) + ")" : "");
+    }
+    o << ".</p>\n";
+    return o.str();
+}
+
+std::string perceptualStudyHtml(const ReportInputs& in) {
+    if (!in.matrix || in.matrix->perceptual.sets.empty()) return "";
+    std::ostringstream o;
+    o << "<h2 id=\"perceptual\">The study's perceptual half: people</h2>\n";
+    if (in.studyDir.empty()) {
+        o << "<p id=\"perceptual-status\">No votes yet. The ranking experiment is in <a href=\"" << kStudyFolder
+          << "/index.html\">" << kStudyFolder
+          << "/</a>; copy it out of the report, collect votes (README: <em>The perceptual experiment</em>) and give "
+             "the folder with <code>--study</code> to a run or a <code>--merge</code>.</p>\n";
+        return o.str();
+    }
+    try {
+        const StudyKey key = loadStudyKey(in.studyDir);
+        const auto votes = loadVotes({(fs::path(in.studyDir) / kStudyVotesDir).string()}, key);
+        const StudyAnalysis a = analyseStudy(key, votes);
+        o << "<p id=\"perceptual-status\">" << votes.size() << " observers' votes, " << a.included
+          << " kept (a failed control or a reversed repeat excludes: README).</p>\n";
+        o << studyFigureHtml(key, a, (fs::path(in.reportDir) / "plots").string(), "plots");
+    } catch (const std::exception& e) {
+        o << "<p id=\"perceptual-status\" class=\"FAIL\">The votes could not be read: " << html(e.what()) << "</p>\n";
+    }
+    return o.str();
+}
+
+int analyseStudyCommand(const std::string& folder, const std::vector<std::string>& extraVotes) {
+    try {
+        const StudyKey key = loadStudyKey(folder);
+        std::vector<std::string> sources;
+        const fs::path own = fs::path(folder) / kStudyVotesDir;
+        if (fs::is_directory(own)) sources.push_back(own.string());
+        sources.insert(sources.end(), extraVotes.begin(), extraVotes.end());
+        const auto votes = loadVotes(sources, key);
+        if (votes.empty()) {
+            std::cerr << "stipple-validate: --analyse-study: no votes in " << own.string() << " or the files given\n";
+            return 3;
+        }
+        const StudyAnalysis a = analyseStudy(key, votes);
+        const std::string text = studyAnalysisText(key, a);
+        std::cout << text;
+        const fs::path out = fs::path(folder) / "analysis";
+        fs::create_directories(out);
+        writeTextFile((out / "analysis.json").string(), studyAnalysisJson(key, a));
+        writeTextFile((out / "analysis.txt").string(), text);
+        const std::string body = studyFigureHtml(key, a, (out / "plots").string(), "plots");
+        writeTextFile((out / "index.html").string(),
+                      "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Perceptual experiment " +
+                          html(key.study) +
+                          "</title><style>body{font:15px/1.4 system-ui,sans-serif;margin:1em}table{border-collapse:"
+                          "collapse}td,th{border:1px solid #ccc;padding:3px 6px}.grid{display:flex;flex-wrap:wrap;"
+                          "gap:1em}.sw{display:inline-block;width:.8em;height:.8em;margin-right:.3em}</style></head>"
+                          "<body><h1>Perceptual experiment of " +
+                          html(key.matrix) + "</h1>\n" + body + "</body></html>\n");
+        std::cout << "analysis: " << (out / "index.html").string() << "\n";
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "stipple-validate: --analyse-study: " << e.what() << "\n";
+        return 3;
+    }
+}
+
+} // namespace stipple::validation
