@@ -98,9 +98,9 @@ ObserverScreen screenObserver(const ObserverVotes& votes, const StudyKey& key) {
     if (s.controlsPassed < s.controls) {
         s.excluded = true;
         s.reason = fmt("control failed in %d of %d trials", s.controls - s.controlsPassed, s.controls);
-    } else if (repeatedPairs && s.consistency < kMinConsistency) {
+    } else if (repeatedPairs >= kMinRepeatedPairs && s.consistency < kMinConsistency) {
         s.excluded = true;
-        s.reason = fmt("repeat reversed: consistency %.2f < %.2f", s.consistency, kMinConsistency);
+        s.reason = fmt("every repeated pair reversed (%d pairs)", repeatedPairs);
     }
     return s;
 }

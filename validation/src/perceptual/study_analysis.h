@@ -16,9 +16,12 @@ namespace stipple::validation {
 
 // Exclusion rule (README: The perceptual experiment): an observer is left out when any control trial is failed
 // (the control crop, the same region at control spp, not ranked strictly last: "no visible difference" fails),
-// or when the repeats reverse their first answers: agreement below kMinConsistency (share of repeated pairs
-// ordered the same way, a tie against an order counting half).
-inline constexpr double kMinConsistency = 0.25;
+// or when the repeats reverse every pair they repeat, over at least kMinRepeatedPairs pairs: consistency (share
+// of repeated pairs ordered the same way, a tie against an order counting half) below kMinConsistency. Crops
+// nobody can tell apart make honest answers random, and a random answerer reverses two 3-crop repeats
+// completely 1 time in 36: the rule catches a scale read backwards, not doubt.
+inline constexpr double kMinConsistency = 0.05;
+inline constexpr int kMinRepeatedPairs = 6;
 
 struct ObserverScreen {
     std::string observer, source;
