@@ -8,6 +8,7 @@
 #include <random>
 
 #include <nlohmann/json.hpp>
+#include <stipple/statistics/student_t.h>
 
 #include "../statistics.h"
 #include "../text.h"
@@ -29,13 +30,18 @@ int order(const TrialVote& t, const std::string& a, const std::string& b) {
     return positionOf(t.ranking, a) < positionOf(t.ranking, b) ? 1 : -1;
 }
 
-double percentile(std::vector<double> v, double p) {
-    std::sort(v.begin(), v.end());
-    if (v.empty()) return NAN;
-    const double at = p * double(v.size() - 1);
-    const size_t i = size_t(at);
-    const double f = at - double(i);
-    return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
+// The interval est ± t(n−1) · se of a bootstrap over n observers: se the replicates' standard deviation times
+// √(n / (n − 1)) (the bootstrap's plug-in variance is short by that factor), Student's t for the few observers.
+// The plain percentile interval covered 88% at 12 observers in the coverage test; this one holds its rate there.
+struct BootstrapInterval {
+    double lo, hi;
+};
+BootstrapInterval bootstrapInterval(double estimate, const std::vector<double>& replicates, size_t observers,
+                                    double confidence) {
+    if (observers < 2 || replicates.size() < 2) return {-INFINITY, INFINITY};
+    const double se = std::sqrt(sampleVariance(replicates) * double(observers) / double(observers - 1));
+    const double t = statistics::studentTQuantile(0.5 + 0.5 * confidence, double(observers - 1));
+    return {estimate - t * se, estimate + t * se};
 }
 
 // Kendall's tau between two score lists (higher better), ties counted as neither.
@@ -167,8 +173,9 @@ StudyAnalysis analyseStudy(const StudyKey& key, const std::vector<ObserverVotes>
         };
         for (size_t i = 0; i < n; ++i) {
             const auto v = column([i](const std::vector<double>& r) { return r[i]; });
-            sa.lo95.push_back(i == 0 ? 0 : percentile(v, 0.025));
-            sa.hi95.push_back(i == 0 ? 0 : percentile(v, 0.975));
+            const BootstrapInterval ci = bootstrapInterval(sa.score[i], v, kept.size(), 0.95);
+            sa.lo95.push_back(i == 0 ? 0 : ci.lo);
+            sa.hi95.push_back(i == 0 ? 0 : ci.hi);
         }
         for (size_t i = 0; i < n; ++i)
             for (size_t j = i + 1; j < n; ++j) {
@@ -178,16 +185,21 @@ StudyAnalysis analyseStudy(const StudyKey& key, const std::vector<ObserverVotes>
                 p.observers = a.included;
                 p.difference = sa.score[i] - sa.score[j];
                 const auto v = column([i, j](const std::vector<double>& r) { return r[i] - r[j]; });
-                p.lo95 = percentile(v, 0.025);
-                p.hi95 = percentile(v, 0.975);
-                p.lo90 = percentile(v, 0.05);
-                p.hi90 = percentile(v, 0.95);
+                const BootstrapInterval c95 = bootstrapInterval(p.difference, v, kept.size(), 0.95);
+                const BootstrapInterval c90 = bootstrapInterval(p.difference, v, kept.size(), 0.90);
+                p.lo95 = c95.lo;
+                p.hi95 = c95.hi;
+                p.lo90 = c90.lo;
+                p.hi90 = c90.hi;
                 if (p.lo95 > 0) p.verdict = PairVerdictKind::PreferredA;
                 else if (p.hi95 < 0) p.verdict = PairVerdictKind::PreferredB;
                 else if (p.lo90 > -key.margin && p.hi90 < key.margin) p.verdict = PairVerdictKind::Equivalent;
                 // Observers a decided verdict would need at this effect with 80% power: the standard error
                 // (from the 95% interval) shrinks as 1/√observers.
-                const double se = (p.hi95 - p.lo95) / (2 * 1.959964), d = std::fabs(p.difference);
+                const double se = std::isfinite(p.hi95 - p.lo95)
+                                      ? (p.hi95 - p.lo95) / (2 * statistics::studentTQuantile(0.975, double(kept.size() - 1)))
+                                      : 0,
+                             d = std::fabs(p.difference);
                 double need = INFINITY;
                 if (se > 0 && d > 1e-9) need = std::min(need, a.included * std::pow((1.959964 + 0.841621) * se / d, 2));
                 if (se > 0 && d < key.margin)
