@@ -217,6 +217,17 @@ def main():
         status = run_session(driver, url, "careless", latent_chooser(key, latent, random.Random(7), careless=True),
                              use_keys=False)
         check(status == "ok", "the careless observer's votes stored")
+        # A server killed during a session loses that session only.
+        votes_dir = os.path.join(study, "votes")
+        before = folder_digest(votes_dir)
+        driver.get(url + "?observer=interrupted")
+        driver.find_element(By.ID, "start").click()
+        driver.find_element(By.TAG_NAME, "body").send_keys("1")
+        server.kill()
+        server.wait()
+        check(folder_digest(votes_dir) == before and len(os.listdir(votes_dir)) == 13,
+              "a server killed during a session leaves the 13 finished observers' votes intact")
+        server, url = start_server(tool, study)
         # The pixels: integer zoom, pixelated, at 1280 and 800 px wide.
         for width in (1280, 800):
             driver.set_window_size(width, 800)
@@ -235,7 +246,6 @@ def main():
         driver.quit()
 
     # --- hostile requests: each refused, the collected votes unchanged ---
-    votes_dir = os.path.join(study, "votes")
     before = folder_digest(votes_dir)
     with open(os.path.join(votes_dir, "observer-01.json"), "rb") as f:
         good = json.loads(f.read())
