@@ -6,14 +6,19 @@
 #define BOOST_TEST_MODULE validation_perceptual
 #include <boost/test/unit_test.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <random>
 
 #include <nlohmann/json.hpp>
 
 #include "perceptual/study_analysis.h"
 #include "perceptual/thurstone.h"
+#include "matrix.h"
 #include "perceptual/votes.h"
 
 using namespace stipple::validation;
@@ -235,4 +240,78 @@ BOOST_AUTO_TEST_CASE(votes_files_are_refused_field_by_field) {
     } catch (const StudyError& e) {
         BOOST_TEST(std::string(e.what()).find("limit") != std::string::npos);
     }
+}
+
+namespace {
+
+const char* kMatrixHead = R"(name: m
+scenes:
+  - file: scene.yaml
+    name: box
+    regions:
+      - { name: shadow, rect: [0.0, 0.5, 0.5, 1.0] }
+patterns: [independent, stratified, poisson]
+spp: [4, 16, 64]
+seeds: 4
+reference: { pattern: stratified, spp: 1024 }
+)";
+
+// The parser checks that scene files exist: one, empty, in a temporary folder.
+std::string matrixPath() {
+    static const std::filesystem::path dir = [] {
+        auto d = std::filesystem::temp_directory_path() / ("stipple-perceptual-test-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(d);
+        std::ofstream(d / "scene.yaml") << "name: box\n";
+        return d;
+    }();
+    return (dir / "m.yaml").string();
+}
+
+Matrix parseWith(const std::string& perceptual) {
+    return parseMatrix(std::string(kMatrixHead) + perceptual, matrixPath(),
+                       MatrixVocabulary{{"independent", "stratified", "poisson"}, {"path"}});
+}
+
+void refusedMatrix(const std::string& perceptual, const std::string& expect) {
+    try {
+        parseWith(perceptual);
+        BOOST_ERROR("accepted: " << expect);
+    } catch (const MatrixError& e) {
+        BOOST_TEST(std::string(e.what()).find(expect) != std::string::npos, e.what() << " (expected " << expect << ")");
+        BOOST_TEST(std::string(e.what()).rfind(matrixPath() + ":", 0) == 0u, "no file:line:column in " << e.what());
+    }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_matrix_perceptual_section) {
+    struct Cleanup {
+        ~Cleanup() { std::filesystem::remove_all(std::filesystem::path(matrixPath()).parent_path()); }
+    } cleanup;
+    const Matrix m = parseWith("perceptual:\n  repeats: 1\n  control_spp: 4\n  sets:\n"
+                               "    - { scene: box, region: shadow, patterns: [independent, poisson], spp: 64 }\n");
+    BOOST_TEST(m.perceptual.sets.size() == 1u);
+    BOOST_TEST(m.perceptual.sets[0].patterns.size() == 2u);
+    BOOST_TEST(m.perceptual.controlSpp == 4u);
+    BOOST_TEST(m.perceptual.repeats == 1);
+    BOOST_TEST(m.perceptual.controls == 2);
+    BOOST_TEST(parseWith("").perceptual.sets.empty());
+    const std::string set = "  sets:\n    - { scene: box, region: shadow, patterns: [independent, poisson], spp: 64 }\n";
+    refusedMatrix("perceptual:\n  sets:\n    - { scene: boxx, region: shadow, patterns: [independent, poisson], spp: 64 }\n",
+                  "unknown scene 'boxx'");
+    refusedMatrix("perceptual:\n  sets:\n    - { scene: box, region: wall, patterns: [independent, poisson], spp: 64 }\n",
+                  "no region 'wall'");
+    refusedMatrix("perceptual:\n  sets:\n    - { scene: box, region: shadow, patterns: [independent], spp: 64 }\n",
+                  "2 to 4");
+    refusedMatrix("perceptual:\n  sets:\n    - { scene: box, region: shadow, patterns: [independent, sobol], spp: 64 }\n",
+                  "'sobol' is not one of the matrix's patterns");
+    refusedMatrix("perceptual:\n  sets:\n    - { scene: box, region: shadow, patterns: [poisson, poisson], spp: 64 }\n",
+                  "named twice");
+    refusedMatrix("perceptual:\n  sets:\n    - { scene: box, region: shadow, patterns: [independent, poisson], spp: 32 }\n",
+                  "one of the matrix's spp");
+    refusedMatrix("perceptual:\n  control_spp: 64\n" + set, "above control_spp");
+    refusedMatrix("perceptual:\n  repeats: 2\n" + set, "repeats must be in [0, 1]");
+    refusedMatrix("perceptual:\n  controls: 0\n" + set, "controls must be in [1, 10]");
+    refusedMatrix("perceptual:\n  trails: 2\n" + set, "trails");
+    refusedMatrix("perceptual:\n  trials: 1\n", "needs a list of sets");
 }
