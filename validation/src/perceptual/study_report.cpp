@@ -156,6 +156,11 @@ std::string perceptualStudyHtml(const ReportInputs& in) {
     if (!in.matrix || in.matrix->perceptual.sets.empty()) return "";
     std::ostringstream o;
     o << "<h2 id=\"perceptual\">The study's perceptual half: people</h2>\n";
+    if (in.studyDir.empty() && !fs::exists(fs::path(in.reportDir) / kStudyFolder / "index.html")) {
+        o << "<p id=\"perceptual-status\">No votes given, and no experiment folder here: a run of the matrix "
+             "writes it (a <code>--merge</code> does not); <code>--study FOLDER</code> adds its votes.</p>\n";
+        return o.str();
+    }
     if (in.studyDir.empty()) {
         o << "<p id=\"perceptual-status\">No votes yet. The ranking experiment is in <a href=\"" << kStudyFolder
           << "/index.html\">" << kStudyFolder
