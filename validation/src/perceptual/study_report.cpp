@@ -116,8 +116,8 @@ std::string studyFigureHtml(const StudyKey& key, const StudyAnalysis& a, const s
               << "</td></tr>\n";
         }
     o << "</table></div>\n<p class=\"note\">People's quality scale from rankings (Thurstone Case V by maximum "
-         "likelihood; 1 JOD: 75% of observers prefer the better), 95% percentile bootstrap interval over the kept "
-         "observers ("
+         "likelihood; 1 JOD: 75% of observers prefer the better), 95% interval from a bootstrap over the kept "
+         "observers (estimate ± t(n−1) × the resamples' standard deviation × √(n/(n−1)); "
       << a.bootstrapSamples << " resamples, seed " << a.seed
       << "). <strong>PREFERRED</strong>: the interval excludes 0; <strong>EQUIVALENT</strong>: the 90% interval lies "
          "within ±"
