@@ -316,6 +316,12 @@ def main():
     os.makedirs(downloads)
     driver = browser(800, 700, downloads)
     try:
+        driver.get("file://" + os.path.join(study, "index.html") + "?observer=look")
+        driver.find_element(By.ID, "start").click()
+        time.sleep(0.3)
+        loaded = driver.execute_script(
+            "return [...document.querySelectorAll('#crops img')].every(i => i.complete && i.naturalWidth > 0)")
+        check(loaded, "from file:// the crops load (no server, no network)")
         run_session(driver, "file://" + os.path.join(study, "index.html"), "offline-1",
                     latent_chooser(key, latent, random.Random(5)), use_keys=True)
         target = os.path.join(downloads, "votes-offline-1.json")
