@@ -50,6 +50,7 @@ double kendall(const std::vector<double>& x, const std::vector<double>& y, int* 
     int c = 0, d = 0, n = 0;
     for (size_t i = 0; i < x.size(); ++i)
         for (size_t j = i + 1; j < x.size(); ++j) {
+            if (x[i] == x[j]) continue; // people did not order this pair (e.g. no observer kept)
             const double s = (x[i] - x[j]) * (y[i] - y[j]);
             c += s > 0;
             d += s < 0;
@@ -257,8 +258,10 @@ std::string studyAnalysisText(const StudyKey& key, const StudyAnalysis& a) {
         for (const auto& p : sa.pairs) s += "  " + pairText(set, p) + "\n";
         s += fmt("  rank agreement with FLIP: Kendall tau %.2f; with RMS: %.2f\n", sa.kendallFlip, sa.kendallRms);
     }
-    s += fmt("people and FLIP order %.0f%% of %d pairs the same way (RMS: %.0f%%)\n", 100 * a.agreementFlip,
-             a.agreementPairs, 100 * a.agreementRms);
+    if (a.included == 0) s += "no observer kept: nothing to scale\n";
+    else
+        s += fmt("people and FLIP order %.0f%% of %d pairs the same way (RMS: %.0f%%)\n", 100 * a.agreementFlip,
+                 a.agreementPairs, 100 * a.agreementRms);
     return s;
 }
 

@@ -64,10 +64,12 @@ bool writeStudyPlots(const std::string& plotsDir, const StudyKey& key, const Stu
         const std::string stem = plotStem(si);
         writeTextFile((fs::path(plotsDir) / (stem + ".dat")).string(), dat.str());
         double lo = -0.5, hi = 0.5;
-        for (size_t i = 0; i < set.crops.size(); ++i) {
-            lo = std::min(lo, sa.lo95[i]);
-            hi = std::max(hi, sa.hi95[i]);
-        }
+        for (size_t i = 0; i < set.crops.size(); ++i) // no interval (fewer than 2 observers kept): the scores alone
+            for (double v : {sa.lo95[i], sa.hi95[i], sa.score[i]})
+                if (std::isfinite(v)) {
+                    lo = std::min(lo, v);
+                    hi = std::max(hi, v);
+                }
         script += "reset\nset terminal pngcairo size 420,320 enhanced font ',10'\nset output " + gq(stem + ".png") +
                   "\nset title " + gq(set.name + fmt(", %u spp", set.spp)) + " noenhanced\n" +
                   "set ylabel 'quality, JOD (95% interval over observers)'\nset grid ytics\nunset key\n" +
