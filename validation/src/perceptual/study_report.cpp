@@ -143,9 +143,12 @@ std::string studyFigureHtml(const StudyKey& key, const StudyAnalysis& a, const s
           << " observers; Kendall τ of people's order with FLIP's " << fmt("%.2f", sa.kendallFlip) << ", with RMS's "
           << fmt("%.2f", sa.kendallRms) << "</figcaption></figure>";
     }
-    o << "</div>\n<p class=\"note\" id=\"perceptual-agreement\">People and mean FLIP order "
-      << fmt("%.0f%%", 100 * a.agreementFlip) << " of " << a.agreementPairs << " pairs the same way (RMS: "
-      << fmt("%.0f%%", 100 * a.agreementRms) << "). Observers: ";
+    o << "</div>\n<p class=\"note\" id=\"perceptual-agreement\">";
+    if (a.agreementPairs == 0)
+        o << "People ordered no pair (no observer kept). Observers: ";
+    else
+        o << "People and mean FLIP order " << fmt("%.0f%%", 100 * a.agreementFlip) << " of " << a.agreementPairs
+          << " pairs the same way (RMS: " << fmt("%.0f%%", 100 * a.agreementRms) << "). Observers: ";
     for (size_t i = 0; i < a.screens.size(); ++i) {
         const auto& s = a.screens[i];
         o << (i ? ", " : "") << html(s.observer) << (s.excluded ? " (<strong>excluded</strong>: " + html(s.reason) + ")" : "");
