@@ -59,8 +59,9 @@ bool writeStudyPlots(const std::string& plotsDir, const StudyKey& key, const Stu
         std::ostringstream dat;
         dat << "# index pattern jod lo95 hi95\n";
         for (size_t i = 0; i < set.crops.size(); ++i)
-            dat << i << " \"" << set.crops[i].pattern << "\" " // gnuplot data quotes with " only << fmt("%.9g %.9g %.9g", sa.score[i], sa.lo95[i], sa.hi95[i])
-                << "\n";
+            // gnuplot's data files quote strings with " only.
+            dat << i << " \"" << set.crops[i].pattern << "\" "
+                << fmt("%.9g %.9g %.9g", sa.score[i], sa.lo95[i], sa.hi95[i]) << "\n";
         const std::string stem = plotStem(si);
         writeTextFile((fs::path(plotsDir) / (stem + ".dat")).string(), dat.str());
         double lo = -0.5, hi = 0.5;
