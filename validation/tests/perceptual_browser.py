@@ -357,6 +357,10 @@ def main():
           "the report's first screen has people's verdicts and Figure 8")
     check(all(os.path.exists(os.path.join(people, "plots", f"perceptual-set-{i + 1}.png")) for i in range(len(names))),
           "Figure 8's plots are written")
+    for i, s in enumerate(key["sets"]):
+        rows = [l.split() for l in open(os.path.join(people, "plots", f"perceptual-set-{i + 1}.dat")) if l[0] != "#"]
+        check([r[1].strip('"') for r in rows] == [c["pattern"] for c in s["crops"]] and all(len(r) == 5 for r in rows),
+              f"Figure 8's data for set {i + 1}: one row per pattern with score and interval ({rows})")
     if shots:
         driver = browser(1280, 1000)
         try:
