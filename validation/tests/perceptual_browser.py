@@ -8,9 +8,10 @@ usage: perceptual_browser.py STIPPLE_VALIDATE MATRIX WORK [SCREENSHOTS]
 Runs the matrix (its 'perceptual' section makes the experiment folder), copies the experiment out of the report,
 serves it with --serve-study and drives the page as simulated observers (keyboard and mouse):
 
-  recovery   12 observers with a known latent quality per pattern (JOD) and Thurstone Case V noise: the scaling
-             orders the patterns as the latent scores do, and of the 4 relative scores' 95% intervals at least 3
-             cover the truth (each covers with probability 0.95: all but one fail to with probability 0.986).
+  recovery   12 observers with a known latent quality per pattern (JOD, 1.5 apart) and Thurstone Case V noise: the
+             scaling orders the patterns as the latent scores do (probability about 0.99 per set, by simulation of
+             the same observers), and of the 4 relative scores' 95% intervals at least 3 cover the truth (each
+             covers with probability ≥ 0.95: two or more misses have probability ≤ 0.014).
   careless   one observer answering at random everywhere: excluded by the control (a random ranking passes one
              control with probability 1/4 here, both with 1/16; seed fixed).
   null       10 observers who see no difference between the patterns (but see the control): at most 1 of the 6
