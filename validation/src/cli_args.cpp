@@ -13,7 +13,7 @@ namespace stipple::validation {
 const char* const kValidateUsage =
     "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
     "                        [--shard i/n] [--references-only] [--quiet] [--merge DIR1 DIR2 ...]\n"
-    "                        [--allow-renderer | --renderer PROGRAM]\n"
+    "                        [--renderer-command FILE (--allow-renderer | --renderer PROGRAM)]\n"
     "       stipple-validate --version | --help\n"
     "Runs the matrix's scenes x patterns x spp x seeds, measures RMS against cached references and render time,\n"
     "checks the matrix's claims and writes an HTML report. An option's value may follow as the next argument or\n"
@@ -29,10 +29,12 @@ const char* const kValidateUsage =
     "                     left to --merge (default: 1/1, the whole matrix)\n"
     "  --references-only  make the references (of this shard's scenes) in the cache and stop (default: off)\n"
     "  --merge DIR...     combine shard report folders into the report a single run makes (default: off)\n"
-    "  --allow-renderer   run the external renderer commands the matrix names (default: off; a matrix alone runs\n"
-    "                     no program)\n"
-    "  --renderer PROGRAM run PROGRAM as the external renderer, in place of the program of the matrix's commands\n"
-    "                     (default: none)\n"
+    "  --renderer-command FILE  the command templates a matrix may run (one argument per line, a blank line\n"
+    "                     between templates): a matrix's external renderer command runs only when byte-equal to one\n"
+    "  --allow-renderer   run the matrix's external renderer commands that are templates of FILE (default: off; a\n"
+    "                     matrix alone runs no program)\n"
+    "  --renderer PROGRAM run PROGRAM in place of the first argument of the matrix's commands whose other arguments\n"
+    "                     are a template of FILE (default: none)\n"
     "  -q, --quiet        no progress, tables or summary: only warnings, errors and the exit status (default: off)\n"
     "  -h, --help         this text; --version: the version line\n"
     "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
@@ -105,6 +107,8 @@ Args parseArgs(const std::vector<std::string>& argv) {
             a.allowRenderer = true;
         } else if (s == "--renderer") {
             a.renderer = value();
+        } else if (s == "--renderer-command") {
+            a.rendererCommand = value();
         } else if (s == "--merge") {
             if (attached) a.merge.push_back(value());
             while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) {
@@ -122,6 +126,13 @@ Args parseArgs(const std::vector<std::string>& argv) {
             throw UsageError("unexpected argument '" + s + "' (the matrix is '" + a.matrix + "')");
     }
     if (a.matrix.empty()) throw UsageError("no matrix file given");
+    if ((a.allowRenderer || !a.renderer.empty()) != !a.rendererCommand.empty())
+        throw UsageError(a.rendererCommand.empty()
+                             ? "--allow-renderer and --renderer need --renderer-command FILE: the templates a matrix's "
+                               "command must equal (a matrix cannot add arguments of its own)"
+                             : "--renderer-command needs --allow-renderer or --renderer PROGRAM");
+    if (a.allowRenderer && !a.renderer.empty())
+        throw UsageError("--allow-renderer runs the matrix's programs, --renderer PROGRAM replaces them: give one");
     if (!a.merge.empty() && (a.shardCount > 1 || a.referencesOnly))
         throw UsageError("--merge combines finished shards; it cannot be used with --shard or --references-only");
     return a;

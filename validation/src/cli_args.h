@@ -25,9 +25,11 @@ struct Args {
     std::vector<std::string> merge;
     bool help = false;    // -h / --help: print kValidateUsage and stop
     bool version = false; // --version: print the version line and stop
-    // External renderers (a matrix's 'renderer'): run the matrix's own command, or this program in its place.
+    // External renderers (a matrix's 'renderer'): run the matrix's own command, or this program in its place,
+    // when the command is one of the templates of rendererCommand (external_renderer.h, RendererPermission).
     bool allowRenderer = false;
     std::string renderer;
+    std::string rendererCommand;
 };
 
 // argv without the program name. Throws UsageError.

@@ -49,6 +49,16 @@ ImageError compareImages(const Image& reference, const Image& image) {
     return e;
 }
 
+std::string unmeasurableWhy(const ImageError& error) {
+    const uint64_t all = error.pixels + error.nonFinitePixels;
+    if (error.pixels == 0) return "no pixel is finite in both the image and the reference (" + std::to_string(all) + " pixels)";
+    if (double(error.nonFinitePixels) > kMaxNonFinitePixelShare * double(all))
+        return std::to_string(error.nonFinitePixels) + " of " + std::to_string(all) +
+               " pixels are not finite (NaN or infinite) in the image or the reference; at most " +
+               std::to_string(kMaxNonFinitePixelShare * 100).substr(0, 4) + "% may be";
+    return "";
+}
+
 double noiseFloor(const Image& varianceOfMean) {
     checkShape(varianceOfMean, "variance");
     double sum = 0;

@@ -4,7 +4,9 @@
 // Images are the renderer's Image (a plain struct; this file needs no renderer code).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <stipple/render/renderer.h>
@@ -28,8 +30,21 @@ ImageError compareImages(const Image& reference, const Image& image);
 // Non-finite pixels are skipped.
 double noiseFloor(const Image& varianceOfMean);
 
-// MSE with the reference noise removed: max(mse − floor, 0).
-inline double correctedMse(double mse, double floor) { return mse > floor ? mse - floor : 0.0; }
+// The largest share of a cell's pixels that may be non-finite (in the render or the reference): they are
+// excluded from the error, and beyond this share the error of the rest says nothing of the image, so the cell is
+// an error (measurableError). An image with no finite pixel has no error at all.
+inline constexpr double kMaxNonFinitePixelShare = 0.01;
+
+// "" when the error can be trusted: some pixel compared, and at most kMaxNonFinitePixelShare of them non-finite.
+// Else why not, with the counts.
+std::string unmeasurableWhy(const ImageError& error);
+
+// MSE with the reference noise removed: max(mse − floor, 0). Not a number when either is not: a broken
+// measurement never becomes an error of 0.
+inline double correctedMse(double mse, double floor) {
+    if (std::isnan(mse) || std::isnan(floor)) return mse + floor;
+    return mse > floor ? mse - floor : 0.0;
+}
 // A cell whose corrected MSE is within 2× the floor cannot be told apart from the reference's noise.
 inline bool floorLimited(double correctedMse, double floor) { return correctedMse <= 2.0 * floor; }
 

@@ -19,6 +19,8 @@
 
 #include "baseline.h"
 #include "checks.h"
+#include "external_command.h"
+#include "external_renderer.h"
 #include "cli_args.h"
 #include "matrix.h"
 #include "merge.h"
@@ -79,6 +81,31 @@ int main(int argc, char** argv) {
         std::cerr << "stipple-validate: " << args.matrix << ": " << e.what() << "\n";
         return kExitUsage;
     }
+    // External renderers: what the command line allows is checked against the matrix before anything runs.
+    RendererPermission permission{args.allowRenderer, args.renderer, {}};
+    if (!args.rendererCommand.empty() && args.merge.empty()) {
+        try {
+            permission.commands = readTrustedCommands(args.rendererCommand);
+        } catch (const std::exception& e) {
+            std::cerr << "stipple-validate: --renderer-command: " << e.what() << "\n";
+            return kExitUsage;
+        }
+        bool external = false;
+        for (const MatrixScene& s : matrix.scenes) {
+            if (s.renderer.empty()) continue;
+            external = true;
+            if (const std::string why = checkRendererPermission(s, permission); !why.empty()) {
+                std::cerr << "stipple-validate: " << why << "\n";
+                return kExitUsage;
+            }
+        }
+        // An option that checks nothing must not let a CI line pass.
+        if (!external) {
+            std::cerr << "stipple-validate: " << (args.renderer.empty() ? "--allow-renderer" : "--renderer")
+                      << " was given but no scene of " << args.matrix << " has an external renderer\n";
+            return kExitUsage;
+        }
+    }
     const bool shard = args.shardCount > 1;
     std::string cache = !args.cache.empty() ? args.cache
                         : !matrix.cacheDir.empty()
@@ -117,7 +144,7 @@ int main(int argc, char** argv) {
             o.shardIndex = args.shardIndex;
             o.shardCount = args.shardCount;
             o.referencesOnly = args.referencesOnly;
-            o.renderer = {args.allowRenderer, args.renderer};
+            o.renderer = permission;
             results = runMatrix(matrix, o);
         }
         if (args.referencesOnly) {

@@ -184,6 +184,7 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
             if (const yaml::Node regions = s["regions"]) {
                 if (!regions.IsSequence())
                     P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
+                std::map<std::string, std::string> regionFiles; // safeName -> region name
                 for (const auto& rn : regions) {
                     P.expectMap(rn, "a region");
                     P.onlyKeys(rn, {"name", "rect"}, "a region");
@@ -197,13 +198,12 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                     if (!(0 <= v[0] && v[0] < v[2] && v[2] <= 1 && 0 <= v[1] && v[1] < v[3] && v[3] <= 1))
                         P.fail(rect, "rect must satisfy 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1");
                     rg.x0 = v[0], rg.y0 = v[1], rg.x1 = v[2], rg.y1 = v[3];
-                    for (const auto& other : ms.regions) {
-                        if (other.name == rg.name) P.fail(rn, "region '" + rg.name + "' appears twice");
-                        if (safeName(other.name) == safeName(rg.name))
-                            P.fail(rn, "region names '" + other.name + "' and '" + rg.name +
-                                           "' have the same file name '" + safeName(rg.name) +
-                                           "' in the report; rename one");
-                    }
+                    // By file name in a map: O(n log n), where a scan of the earlier regions was quadratic.
+                    const auto [it, fresh] = regionFiles.emplace(safeName(rg.name), rg.name);
+                    if (!fresh && it->second == rg.name) P.fail(rn, "region '" + rg.name + "' appears twice");
+                    if (!fresh)
+                        P.fail(rn, "region names '" + it->second + "' and '" + rg.name + "' have the same file name '" +
+                                       it->first + "' in the report; rename one");
                     ms.regions.push_back(rg);
                 }
             }
@@ -225,6 +225,10 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
         std::error_code fileError; // the throwing overload aborted the run on a name too long for the system
         if (!fs::is_regular_file(ms.path, fileError))
             P.fail(s, "unknown scene file '" + ms.file + "' (looked for " + ms.path + ")");
+        // The path fills an external renderer's {scene}: it must not read as an option or break a line.
+        if (!ms.renderer.empty())
+            if (const std::string why = checkPlaceholderValue(ms.path); !why.empty())
+                P.fail(s, "the scene file '" + ms.path + "' cannot fill {scene}: " + why);
         if (ms.name.empty()) ms.name = fs::path(ms.file).stem().string();
         if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
         if (!sceneNames.insert(ms.name).second)

@@ -148,8 +148,8 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
                 Provenance p = parseProvenance(render::readFileBounded(provenancePath, 1 << 20, "cache provenance"));
                 ref.cacheProblem = verifyProvenance(p, ref.key, keyMaterial, options.width, options.height);
                 if (ref.cacheProblem.empty()) {
-                    ref.image = render::readImage(ref.imagePath);
-                    ref.variance = render::readImage(variancePath);
+                    ref.image = readCachedImage(ref.imagePath);
+                    ref.variance = readCachedImage(variancePath);
                     ref.cacheProblem = verifyPixels(p, ref.image, ref.variance);
                 }
             } catch (const std::exception& e) {

@@ -73,6 +73,10 @@ double warmUp(const render::Scene& scene, const render::RenderOptions& base, con
 ResultRow measureRow(const std::string& scene, const render::RenderOptions& o, const render::RenderResult& r,
                      const Reference& ref, double noiseFloor) {
     const ImageError e = compareImages(ref.image, r.image);
+    // No verdict from a broken image: the cell is an error, never an error of 0 or of a few pixels.
+    if (const std::string why = unmeasurableWhy(e); !why.empty())
+        throw std::runtime_error("scene " + scene + ", " + o.pattern + ", " + std::to_string(o.spp) + " spp, seed " +
+                                 std::to_string(o.seed) + ": the image cannot be measured: " + why);
     ResultRow row;
     row.scene = scene;
     row.pattern = o.pattern;
@@ -197,7 +201,7 @@ struct ExternalScene {
     std::string workDir;
     ExternalRenderer renderer;
     ExternalScene(const MatrixScene& scene, const RendererPermission& permission)
-        : ms(scene), workDir(makeWorkDir()), renderer(scene, permission, workDir) {}
+        : ms(scene), workDir(permitted(scene, permission)), renderer(scene, permission, workDir) {}
     ~ExternalScene() {
         std::error_code ignored;
         fs::remove_all(workDir, ignored);
@@ -205,6 +209,12 @@ struct ExternalScene {
     ExternalScene(const ExternalScene&) = delete;
     ExternalScene& operator=(const ExternalScene&) = delete;
 
+    // The work folder, made only once the command line's permission is checked (a refused scene leaves none).
+    static std::string permitted(const MatrixScene& scene, const RendererPermission& permission) {
+        if (const std::string why = checkRendererPermission(scene, permission); !why.empty())
+            throw std::runtime_error(why);
+        return makeWorkDir();
+    }
     static std::string makeWorkDir() {
         std::string dir = (fs::temp_directory_path() / "stipple-validate-XXXXXX").string();
         if (!mkdtemp(dir.data())) throw std::runtime_error("cannot make a temporary folder for an external renderer");

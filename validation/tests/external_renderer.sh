@@ -2,12 +2,16 @@
 # SPDX-License-Identifier: Apache-2.0
 # Copyright 2026 The stipple authors
 # stipple-validate driving an external renderer (shim/examples/analytic_host) through a matrix's command template.
-#  1. The matrix with --renderer PROGRAM: checks pass, report and results.json as for any matrix, every cell's CPU
+#  1. The matrix with --renderer PROGRAM and the template file (--renderer-command): checks pass, report and results.json as for any matrix, every cell's CPU
 #     seconds measured from the child; a second run reads the reference from the cache.
 #  2. The same matrix without --renderer or --allow-renderer runs nothing and says how to allow it.
 #  3. Bad templates (unknown placeholder, no {output}) are refused when the matrix is read, naming file:line.
 #  4. Renderers that exit non-zero, crash, write no image or an image of the wrong size, and a placeholder whose
 #     value would mean something to a shell: each scene skipped with an error naming its cell; the rest completes.
+#  5. The trusted side alone says what a program receives: a matrix that adds arguments to an allowed template
+#     (here '--output <a user's file>') is refused before anything runs and the file is untouched; a {scene} that
+#     starts with '-' or holds a newline is refused at load with file:line:column; --renderer without a template
+#     file, or with a matrix that has no external scene, is a usage error (exit 2).
 # usage: external_renderer.sh STIPPLE_VALIDATE ANALYTIC_HOST MATRIX_DIR WORKDIR
 set -u
 bin=$1 host=$2 dir=$3 work=$4
@@ -17,14 +21,14 @@ fail() { echo "FAILED: $*"; ok=0; }
 run() { local log=$1; shift; (cd "$work" && "$@") > "$log" 2>&1; echo "exit $?" >> "$log"; }
 
 # 1. A passing run, then the same from the cache.
-run "$work/good.log" "$bin" "$dir/external-renderer.yaml" -o "$work/good" --cache "$work/cache" --renderer "$host"
+run "$work/good.log" "$bin" "$dir/external-renderer.yaml" -o "$work/good" --cache "$work/cache" --renderer "$host" --renderer-command "$dir/analytic-host.command"
 cat "$work/good.log"
 [ "$(tail -1 "$work/good.log")" = "exit 0" ] || fail "the external-renderer matrix did not pass"
 grep -qE "3 checks, 0 failed" "$work/good.log" || fail "not 3 checks passed"
 [ -f "$work/good/index.html" ] || fail "no report"
 rows=$(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(len(r["rows"]), sum(1 for x in r["rows"] if x["cpu_seconds"] > 0), r["scenes"][0]["integrator"])' "$work/good/results.json")
 [ "$rows" = "36 36 external: analytic_host" ] || fail "results.json rows / cpu-timed rows / integrator: $rows (expected 36 36 external: analytic_host)"
-run "$work/again.log" "$bin" "$dir/external-renderer.yaml" -o "$work/again" --cache "$work/cache" --renderer "$host"
+run "$work/again.log" "$bin" "$dir/external-renderer.yaml" -o "$work/again" --cache "$work/cache" --renderer "$host" --renderer-command "$dir/analytic-host.command"
 grep -qE "cached:" "$work/again.log" || fail "the second run did not read the reference from the cache"
 
 # 2. No permission: nothing runs.
@@ -35,17 +39,19 @@ grep -q -- "--allow-renderer" "$work/denied.log" || fail "the refusal does not s
 [ ! -d "$work/cache-denied" ] || [ -z "$(ls -A "$work/cache-denied")" ] || fail "a reference was made without permission"
 
 # 3. Bad templates, refused when read.
-run "$work/placeholder.log" "$bin" "$dir/bad-placeholder.yaml" -o "$work/placeholder" --renderer "$host"
+run "$work/placeholder.log" "$bin" "$dir/bad-placeholder.yaml" -o "$work/placeholder" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command"
 grep -qE "bad-placeholder.yaml:[0-9]+:[0-9]+: argument 4 '\{sample_count\}': unknown placeholder \{sample_count\}" \
   "$work/placeholder.log" || fail "unknown placeholder not named: $(cat "$work/placeholder.log")"
 [ "$(tail -1 "$work/placeholder.log")" = "exit 2" ] || fail "unknown placeholder: not exit 2"
-run "$work/nooutput.log" "$bin" "$dir/no-output.yaml" -o "$work/nooutput" --renderer "$host"
+run "$work/nooutput.log" "$bin" "$dir/no-output.yaml" -o "$work/nooutput" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command"
 grep -qE "no-output.yaml:[0-9]+:[0-9]+: no argument has \{output\}" "$work/nooutput.log" || fail "missing {output} not named"
 [ "$(tail -1 "$work/nooutput.log")" = "exit 2" ] || fail "missing {output}: not exit 2"
 
 # 4. Failing renderers beside a working one (programs found on PATH, as the matrix names them).
 run "$work/failing.log" env PATH="$(dirname "$host"):$PATH" "$bin" "$dir/failing-renderers.yaml" -o "$work/failing" \
-  --cache "$work/cache" --allow-renderer
+  --cache "$work/cache" --allow-renderer --renderer-command "$dir/failing-renderers.commands"
 cat "$work/failing.log"
 [ "$(tail -1 "$work/failing.log")" = "exit 3" ] || fail "failing renderers: not exit 3"
 for pattern in \
@@ -60,5 +66,44 @@ done
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); s={x["scene"] for x in r["rows"]}; k={x["name"] for x in r["skipped_scenes"]}; sys.exit(0 if s=={"works"} and k=={"exits","crashes","writes-nothing","wrong-size","quoted"} and len(r["rows"])==8 else 1)' \
   "$work/failing/results.json" || fail "results.json: the working scene's 8 rows and the 5 skipped scenes expected"
 
-[ $ok -eq 1 ] && echo "PASSED: external renderer driven, refused without permission, bad templates and failing renderers named"
+# 5. A matrix can fill placeholders, nothing else.
+mkdir -p "$work/trust" && cp "$dir/analytic-lights.scene" "$work/trust/lights.scene"
+echo "a user's file" > "$work/trust/victim.txt"
+template='[analytic_host, --pattern, "{pattern}", --spp, "{spp}", --seed, "{seed}", --width, "{width}", --height, "{height}", --output, "{output}"'
+matrix() { # name scene-file command-tail
+  printf 'name: %s\nscenes:\n  - { file: "%s", name: s, width: 8, height: 6, renderer: { command: %s, format: pfm } }\npatterns: [independent]\nspp: [4]\nseeds: 4\nreference: { spp: 16, seed: 7 }\n' \
+    "$1" "$2" "$3" > "$work/trust/$1.yaml"
+}
+matrix escape lights.scene "$template, --output, $work/trust/victim.txt]"
+(cd "$work/trust" && "$bin" escape.yaml -o "$work/trust/out-escape" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command") > "$work/escape.log" 2>&1; echo "exit $?" >> "$work/escape.log"
+[ "$(tail -1 "$work/escape.log")" = "exit 2" ] || fail "a matrix that adds arguments was not refused with exit 2: $(cat "$work/escape.log")"
+grep -qE "escape.yaml:[0-9]+:[0-9]+: scene s: the command .* is not one the command line allows" "$work/escape.log" ||
+  fail "the refusal does not name the matrix's template: $(cat "$work/escape.log")"
+[ "$(cat "$work/trust/victim.txt")" = "a user's file" ] || fail "the user's file was changed"
+cp "$work/trust/lights.scene" "$work/trust/-lights.scene"
+matrix dash -lights.scene "$template]"
+(cd "$work/trust" && "$bin" dash.yaml -o "$work/trust/out-dash" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command") > "$work/dash.log" 2>&1; echo "exit $?" >> "$work/dash.log"
+grep -qE "dash.yaml:[0-9]+:[0-9]+: the scene file '-lights.scene' cannot fill \{scene\}: it starts with '-'" "$work/dash.log" ||
+  fail "a {scene} starting with '-' was not refused at load: $(cat "$work/dash.log")"
+[ "$(tail -1 "$work/dash.log")" = "exit 2" ] || fail "a {scene} starting with '-': not exit 2"
+cp "$work/trust/lights.scene" "$work/trust/new
+line.scene"
+matrix newline 'new\nline.scene' "$template]"
+(cd "$work/trust" && "$bin" newline.yaml -o "$work/trust/out-nl" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command") > "$work/newline.log" 2>&1; echo "exit $?" >> "$work/newline.log"
+grep -qE "newline.yaml:[0-9]+:[0-9]+: the scene file" "$work/newline.log" &&
+  grep -qE "cannot fill \{scene\}: it holds a control character" "$work/newline.log" ||
+  fail "a {scene} with a newline was not refused at load: $(cat "$work/newline.log")"
+run "$work/notemplate.log" "$bin" "$dir/external-renderer.yaml" -o "$work/notemplate" --renderer "$host"
+[ "$(tail -1 "$work/notemplate.log")" = "exit 2" ] || fail "--renderer without --renderer-command: not exit 2"
+grep -q -- "--renderer-command" "$work/notemplate.log" || fail "--renderer without a template file: no word of --renderer-command"
+run "$work/unused.log" "$bin" "$dir/../matrices/cache.yaml" -o "$work/unused" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command"
+[ "$(tail -1 "$work/unused.log")" = "exit 2" ] || fail "--renderer with no external scene: not exit 2: $(cat "$work/unused.log")"
+grep -q "no scene of .* has an external renderer" "$work/unused.log" || fail "an unused --renderer not named"
+[ ! -e "$work/unused/index.html" ] || fail "an unused --renderer still made a report"
+
+[ $ok -eq 1 ] && echo "PASSED: external renderer driven, refused without permission, bad templates and failing renderers named, matrix arguments refused"
 [ $ok -eq 1 ]

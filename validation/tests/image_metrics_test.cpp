@@ -127,3 +127,26 @@ BOOST_AUTO_TEST_CASE(crop_is_clamped_and_magnified) {
     BOOST_CHECK_EQUAL(c.pixel(9, 9)[0], 7.0f);
     BOOST_CHECK_EQUAL(c.pixel(8, 8)[0], 0.0f);
 }
+
+BOOST_AUTO_TEST_CASE(an_image_with_too_many_non_finite_pixels_is_not_measured) {
+    // kMaxNonFinitePixelShare (1%) of 10 000 pixels: 100 may be NaN, 101 may not; none finite is never measured.
+    Image ref, img;
+    ref.width = img.width = 100;
+    ref.height = img.height = 100;
+    ref.rgb.assign(100 * 100 * 3, 1.0f);
+    img.rgb.assign(100 * 100 * 3, 1.5f);
+    for (int i = 0; i < 100; ++i) img.rgb[size_t(i) * 3] = std::nanf("");
+    ImageError e = compareImages(ref, img);
+    BOOST_CHECK_EQUAL(e.nonFinitePixels, 100u);
+    BOOST_CHECK_EQUAL(unmeasurableWhy(e), "");
+    img.rgb[100 * 3 + 1] = std::numeric_limits<float>::infinity();
+    e = compareImages(ref, img);
+    BOOST_CHECK(unmeasurableWhy(e).find("101 of 10000 pixels are not finite") != std::string::npos);
+    ref.rgb[5000 * 3] = std::nanf(""); // the reference's own count as well
+    BOOST_CHECK(unmeasurableWhy(compareImages(ref, img)).find("102 of 10000") != std::string::npos);
+    img.rgb.assign(img.rgb.size(), std::nanf(""));
+    e = compareImages(ref, img);
+    BOOST_CHECK(std::isnan(e.mse));
+    BOOST_CHECK(unmeasurableWhy(e).find("no pixel is finite") != std::string::npos);
+    BOOST_CHECK(std::isnan(correctedMse(e.mse, 0.01)));
+}
