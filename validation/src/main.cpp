@@ -148,6 +148,10 @@ int main(int argc, char** argv) {
             results = runMatrix(matrix, o);
         }
         if (args.referencesOnly) {
+            // Ready only when every scene's reference is: a failed one is named and the status says so.
+            for (const auto& k : results.skipped)
+                std::cerr << "stipple-validate: no reference for scene " << k.name << ": " << k.error << "\n";
+            if (!results.skipped.empty()) return kExitError;
             std::cout << "references ready in " << cache << "\n";
             return 0;
         }

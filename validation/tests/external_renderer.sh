@@ -12,6 +12,12 @@
 #     (here '--output <a user's file>') is refused before anything runs and the file is untouched; a {scene} that
 #     starts with '-' or holds a newline is refused at load with file:line:column; --renderer without a template
 #     file, or with a matrix that has no external scene, is a usage error (exit 2).
+#  6. No verdict from a broken image: a renderer whose stratified images are all NaN ends with the cells named as
+#     unmeasurable (exit 3), never a PASS of "stratified < independent".
+#  7. Every cache entry verifies: the variance copied over the image, or a FIFO in its place, is rendered again
+#     (no hang); a folder of the program's name earlier on PATH does not change the key (the cache is used).
+#  8. -o made into a user's folder during the run is left untouched, the new report kept beside it (exit 3);
+#     --references-only with a failing renderer says so (exit 3).
 # usage: external_renderer.sh STIPPLE_VALIDATE ANALYTIC_HOST MATRIX_DIR WORKDIR
 set -u
 bin=$1 host=$2 dir=$3 work=$4
@@ -105,5 +111,63 @@ run "$work/unused.log" "$bin" "$dir/../matrices/cache.yaml" -o "$work/unused" --
 grep -q "no scene of .* has an external renderer" "$work/unused.log" || fail "an unused --renderer not named"
 [ ! -e "$work/unused/index.html" ] || fail "an unused --renderer still made a report"
 
-[ $ok -eq 1 ] && echo "PASSED: external renderer driven, refused without permission, bad templates and failing renderers named, matrix arguments refused"
+# 6. Images of stratified cells with no finite pixel.
+cat > "$work/nan-host.sh" << EOF
+#!/bin/sh
+"$host" "\$@" || exit \$?
+case " \$* " in *" stratified "*) ;; *) exit 0 ;; esac
+while [ \$# -gt 1 ]; do [ "\$1" = --output ] && out=\$2; shift; done
+python3 -c 'import struct,sys; open(sys.argv[1],"wb").write(b"PF\\n16 12\\n-1.0\\n" + struct.pack("<f", float("nan")) * (16*12*3))' "\$out"
+EOF
+chmod +x "$work/nan-host.sh"
+run "$work/nan.log" "$bin" "$dir/external-renderer.yaml" -o "$work/nan" --cache "$work/cache" \
+  --renderer "$work/nan-host.sh" --renderer-command "$dir/analytic-host.command"
+[ "$(tail -1 "$work/nan.log")" = "exit 3" ] || fail "NaN images: not exit 3: $(tail -5 "$work/nan.log")"
+grep -qE "stratified, [0-9]+ spp, seed [0-9]+: the image cannot be measured: no pixel is finite" "$work/nan.log" ||
+  fail "the NaN cell is not named as unmeasurable"
+! grep -qE "PASS +ordering" "$work/nan.log" || fail "a PASS from NaN images: $(grep -E "PASS" "$work/nan.log")"
+
+# 7. Tampered cache entries of the external reference (the cache of step 1).
+entry=$(ls "$work"/cache/external-*.key | head -1); entry=${entry%.key}
+cp "$entry-variance.exr" "$entry.exr"
+run "$work/tamper.log" "$bin" "$dir/external-renderer.yaml" -o "$work/tamper" --cache "$work/cache" \
+  --renderer "$host" --renderer-command "$dir/analytic-host.command"
+grep -q "did not verify (the pixels do not match their checksums)" "$work/tamper.log" ||
+  fail "the variance copied over the image was not caught: $(grep -E "cached|rendered" "$work/tamper.log")"
+rm "$entry.exr" && mkfifo "$entry.exr"
+timeout 120 "$bin" "$dir/external-renderer.yaml" -o "$work/fifo" --cache "$work/cache" --renderer "$host" \
+  --renderer-command "$dir/analytic-host.command" > "$work/fifo.log" 2>&1
+rc=$?
+[ $rc -ne 124 ] || fail "a FIFO in the cache hung the run"
+grep -q "is not a regular file" "$work/fifo.log" || fail "the FIFO in the cache was not named: $(tail -3 "$work/fifo.log")"
+[ -f "$entry.exr" ] && [ ! -p "$entry.exr" ] || fail "the FIFO entry was not replaced"
+mkdir -p "$work/shadow/analytic_host"
+(cd "$work" && env PATH="$(dirname "$host"):$PATH" "$bin" "$dir/external-renderer.yaml" -o "$work/shadow-out" \
+  --cache "$work/cache" --renderer analytic_host --renderer-command "$dir/analytic-host.command") > /dev/null 2>&1
+(cd "$work" && env PATH="$work/shadow:$(dirname "$host"):$PATH" "$bin" "$dir/external-renderer.yaml" -o "$work/shadow-out" \
+  --cache "$work/cache" --renderer analytic_host --renderer-command "$dir/analytic-host.command") > "$work/shadow.log" 2>&1
+grep -q "cached:" "$work/shadow.log" ||
+  fail "a folder named like the program earlier on PATH changed the key: $(grep -E "cached|rendered|ERROR" "$work/shadow.log")"
+
+# 8. -o filled by someone else during the run; --references-only with a failing renderer.
+cat > "$work/fill-host.sh" << EOF
+#!/bin/sh
+mkdir -p "$work/filled" && echo "a user's notes" > "$work/filled/notes.txt"
+exec "$host" "\$@"
+EOF
+chmod +x "$work/fill-host.sh"
+run "$work/filled.log" "$bin" "$dir/external-renderer.yaml" -o "$work/filled" --cache "$work/cache" \
+  --renderer "$work/fill-host.sh" --renderer-command "$dir/analytic-host.command"
+[ "$(cat "$work/filled/notes.txt" 2> /dev/null)" = "a user's notes" ] || fail "the user's file in -o was deleted"
+[ ! -e "$work/filled/index.html" ] || fail "the report was swapped into a folder that changed during the run"
+[ "$(tail -1 "$work/filled.log")" = "exit 3" ] || fail "-o changed during the run: not exit 3: $(tail -3 "$work/filled.log")"
+grep -q "changed during the run" "$work/filled.log" || fail "the refusal to publish is not explained"
+ls -d "$work"/filled.unpublished-*/index.html > /dev/null 2>&1 || fail "the staged report was not kept"
+printf '#!/bin/sh\nexit 7\n' > "$work/fail-host.sh" && chmod +x "$work/fail-host.sh"
+run "$work/refonly.log" "$bin" "$dir/external-renderer.yaml" --references-only --cache "$work/cache-refonly" \
+  --renderer "$work/fail-host.sh" --renderer-command "$dir/analytic-host.command"
+[ "$(tail -1 "$work/refonly.log")" = "exit 3" ] || fail "--references-only with a failed reference: $(tail -1 "$work/refonly.log")"
+! grep -q "references ready" "$work/refonly.log" || fail "--references-only says ready after a failure"
+
+[ $ok -eq 1 ] && echo "PASSED: external renderer driven, refused without permission, bad templates and failing renderers named, matrix arguments refused, NaN images and tampered caches caught, -o rechecked"
 [ $ok -eq 1 ]
