@@ -35,6 +35,8 @@ const char* const kValidateUsage =
     "                     matrix alone runs no program)\n"
     "  --renderer PROGRAM run PROGRAM in place of the first argument of the matrix's commands whose other arguments\n"
     "                     are a template of FILE (default: none)\n"
+    "  --renderer-timeout S  seconds one image of an external renderer may take; past it the program and its\n"
+    "                     children are killed and the cell named (default: the matrix's renderer timeout, else none)\n"
     "  -q, --quiet        no progress, tables or summary: only warnings, errors and the exit status (default: off)\n"
     "  -h, --help         this text; --version: the version line\n"
     "exit status: 0 all checks pass, 1 a check or the baseline failed, 2 bad arguments or matrix, 3 other error\n";
@@ -107,6 +109,13 @@ Args parseArgs(const std::vector<std::string>& argv) {
             a.allowRenderer = true;
         } else if (s == "--renderer") {
             a.renderer = value();
+        } else if (s == "--renderer-timeout") {
+            const std::string v = value();
+            char* end = nullptr;
+            const double t = std::strtod(v.c_str(), &end);
+            if (*end || !(t > 0 && t <= 1e6))
+                throw UsageError("--renderer-timeout: expected seconds in (0, 1000000], got '" + v + "'");
+            a.rendererTimeout = t;
         } else if (s == "--renderer-command") {
             a.rendererCommand = value();
         } else if (s == "--merge") {

@@ -30,6 +30,7 @@ struct Args {
     bool allowRenderer = false;
     std::string renderer;
     std::string rendererCommand;
+    double rendererTimeout = 0; // --renderer-timeout SECONDS: per image; 0: the matrix's
 };
 
 // argv without the program name. Throws UsageError.

@@ -26,6 +26,7 @@
 
 #include <stipple/render/content_hash.h>
 #include <stipple/render/input_limits.h>
+#include <stipple/render/temp_files.h>
 
 extern char** environ;
 
@@ -97,9 +98,12 @@ struct ChildRun {
     double wallSeconds = 0, cpuSeconds = 0;
 };
 
-// Runs the executable (resolved once, so the program run is the one hashed) with argv (no shell) with stdin from /dev/null and stdout + stderr into logPath; waits for it.
+// Runs the executable (resolved once, so the program run is the one hashed) with argv (no shell), stdin from
+// /dev/null, stdout + stderr into logPath, in a process group of its own that the signal cleanup kills and reaps
+// (render::registerChildGroup). Waits for it; past timeoutSeconds (> 0) kills the group and throws naming the
+// cell. Whatever the program left running in its group is killed when it ends.
 ChildRun runChild(const std::string& executable, const std::vector<std::string>& argv, const std::string& logPath,
-                  const std::string& cell) {
+                  const std::string& cell, double timeoutSeconds) {
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -108,12 +112,43 @@ ChildRun runChild(const std::string& executable, const std::vector<std::string>&
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0); // its own group, led by itself
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, executable.c_str(), &actions, nullptr, args.data(), environ);
+    int spawned = 0;
+    {
+        render::SignalHold hold; // started and registered, or (after a signal's cleanup began) never started
+        spawned = posix_spawn(&pid, executable.c_str(), &actions, &attributes, args.data(), environ);
+        if (spawned == 0) render::registerChildGroup(pid);
+    }
     posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
     if (spawned != 0)
         throw std::runtime_error(cell + ": cannot run '" + argv[0] + "': " + std::strerror(spawned));
+    struct Unregister {
+        pid_t pid;
+        ~Unregister() { render::unregisterChildGroup(pid); }
+    } unregister{pid};
+    // Poll for its end without reaping it: while the leader is a zombie its group id cannot be reused, so the
+    // group can be killed safely once it has ended (or when it has run too long).
+    bool timedOut = false;
+    for (;;) {
+        siginfo_t info{};
+        const int w = waitid(P_PID, id_t(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+        if (w < 0 && errno == EINTR) continue;
+        if (w < 0) throw std::runtime_error(cell + ": waiting for '" + argv[0] + "' failed: " + std::strerror(errno));
+        if (info.si_pid == pid) break;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (timeoutSeconds > 0 && elapsed > timeoutSeconds) {
+            timedOut = true;
+            break;
+        }
+        usleep(elapsed < 1 ? 2000 : 20000);
+    }
+    ::kill(-pid, SIGKILL); // the program's own children, or all of it when it ran too long
     ChildRun run;
     struct rusage usage {};
     pid_t waited;
@@ -121,6 +156,11 @@ ChildRun runChild(const std::string& executable, const std::vector<std::string>&
         waited = wait4(pid, &run.status, 0, &usage);
     } while (waited < 0 && errno == EINTR);
     if (waited != pid) throw std::runtime_error(cell + ": waiting for '" + argv[0] + "' failed: " + std::strerror(errno));
+    if (timedOut)
+        throw std::runtime_error(cell + ": the renderer ran longer than the per-image timeout of " +
+                                 std::to_string(timeoutSeconds).substr(0, std::to_string(timeoutSeconds).find('.') + 2) +
+                                 " s (renderer timeout in the matrix, --renderer-timeout) and was killed; its output "
+                                 "ends: " + tail(logPath));
     run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     run.cpuSeconds = double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec) +
                      double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);
@@ -173,6 +213,7 @@ ExternalRenderer::ExternalRenderer(const MatrixScene& scene, const RendererPermi
     : scene_(scene), command_(scene.renderer.command), workDir_(std::move(workDir)) {
     if (const std::string why = checkRendererPermission(scene, permission); !why.empty()) throw std::runtime_error(why);
     if (!permission.program.empty()) command_[0] = permission.program;
+    timeoutSeconds_ = permission.timeoutSeconds > 0 ? permission.timeoutSeconds : scene.renderer.timeoutSeconds;
     std::string why;
     program_ = resolveProgram(command_[0], why);
     if (program_.empty())
@@ -201,7 +242,7 @@ render::RenderResult ExternalRenderer::render(const render::RenderOptions& o) co
     const std::string output = stem + (scene_.renderer.format == "pfm" ? ".pfm" : ".exr"), log = stem + ".log";
     std::error_code ignored;
     fs::remove(output, ignored);
-    const ChildRun run = runChild(program_, expand(o, output), log, cell);
+    const ChildRun run = runChild(program_, expand(o, output), log, cell, timeoutSeconds_);
     if (WIFSIGNALED(run.status))
         throw std::runtime_error(cell + ": the renderer was killed by signal " + signalName(WTERMSIG(run.status)) +
                                  "; its output ends: " + tail(log));

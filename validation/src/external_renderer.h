@@ -30,6 +30,7 @@ struct RendererPermission {
     bool allowMatrixProgram = false;
     std::string program;
     std::vector<std::vector<std::string>> commands;
+    double timeoutSeconds = 0; // --renderer-timeout: per image, over the matrix's; 0: the matrix's (0: none)
     bool granted() const { return allowMatrixProgram || !program.empty(); }
 };
 
@@ -68,6 +69,7 @@ private:
     std::vector<std::string> command_; // the template, the program replaced when the command line named one
     std::string program_;              // the resolved executable (for hashing)
     std::string workDir_;              // where images are written before they are read
+    double timeoutSeconds_ = 0;        // per image; 0: none
 };
 
 // What a run's fingerprint records of an external renderer's scene (the same in every shard, whichever program

@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
         return kExitUsage;
     }
     // External renderers: what the command line allows is checked against the matrix before anything runs.
-    RendererPermission permission{args.allowRenderer, args.renderer, {}};
+    RendererPermission permission{args.allowRenderer, args.renderer, {}, args.rendererTimeout};
     if (!args.rendererCommand.empty() && args.merge.empty()) {
         try {
             permission.commands = readTrustedCommands(args.rendererCommand);

@@ -129,7 +129,7 @@ struct Parser {
     // renderer: { command: [program, arg, ...], format: exr | pfm } (external_renderer.h).
     ExternalCommand renderer(const yaml::Node& node) const {
         expectMap(node, "renderer");
-        onlyKeys(node, {"command", "format"}, "renderer");
+        onlyKeys(node, {"command", "format", "timeout"}, "renderer");
         ExternalCommand r;
         r.where = yaml.where(node);
         const yaml::Node command = required(node, "command", "renderer");
@@ -137,6 +137,11 @@ struct Parser {
             fail(command, "command must be a list: the program, then its arguments (no shell)");
         for (const auto& a : command) r.command.push_back(get<std::string>(a, "a command argument"));
         if (const std::string why = checkCommandTemplate(r.command); !why.empty()) fail(command, why);
+        if (node["timeout"]) {
+            r.timeoutSeconds = get<double>(node["timeout"], "timeout");
+            if (!(r.timeoutSeconds > 0 && r.timeoutSeconds <= 1e6))
+                fail(node["timeout"], "timeout must be seconds in (0, 1000000]");
+        }
         if (node["format"]) {
             r.format = get<std::string>(node["format"], "format");
             if (r.format != "exr" && r.format != "pfm") fail(node["format"], "format must be exr or pfm");

@@ -30,6 +30,7 @@ struct ExternalCommand {
     std::vector<std::string> command;
     std::string format = "exr"; // exr | pfm: the extension of {output}
     std::string where;          // file:line:column of the template in the matrix
+    double timeoutSeconds = 0;  // timeout: seconds one image may take before the program is killed; 0: none
     bool empty() const { return command.empty(); }
 };
 
