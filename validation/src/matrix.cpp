@@ -96,10 +96,40 @@ struct Parser {
         if (!(v > 0)) fail(node, what + " must be > 0, got " + node.Scalar());
         return v;
     }
-    uint32_t spp(const yaml::Node& node, const std::string& what) const {
+    // A sample count: at most the library's N limit (STIPPLE_MAX_SAMPLES_PER_PIXEL), checked here rather than
+    // after every render; a reference is rendered as two halves, so its limit is twice that.
+    uint32_t spp(const yaml::Node& node, const std::string& what, bool reference = false) const {
+        const long long limit = kMaxSamplesPerPixel * (reference ? 2 : 1);
         long long v = get<long long>(node, what);
-        if (v < 1 || v > (1ll << 24)) fail(node, what + " must be in [1, 16777216], got " + node.Scalar());
+        if (v < 1 || v > limit)
+            fail(node, what + " must be in [1, " + std::to_string(limit) + "] (the library's limit on samples per " +
+                           "pixel" + (reference ? ", for each of the reference's two halves" : "") + "), got " +
+                           node.Scalar());
         return uint32_t(v);
+    }
+    // A name shown in reports, file names and messages: valid UTF-8, 1 to kMaxNameBytes bytes, no control
+    // characters.
+    static constexpr size_t kMaxNameBytes = 128;
+    std::string name(const yaml::Node& node, const std::string& what) const {
+        const std::string v = get<std::string>(node, what);
+        if (v.empty() || v.size() > kMaxNameBytes)
+            fail(node, what + " must be 1 to " + std::to_string(kMaxNameBytes) + " bytes long, got " +
+                           std::to_string(v.size()));
+        for (size_t i = 0; i < v.size();) {
+            const unsigned char c = static_cast<unsigned char>(v[i]);
+            const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+            bool ok = n > 0 && i + n <= v.size() && !(n == 1 && (c < 0x20 || c == 0x7f));
+            for (size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(v[i + k]) >> 6) == 0x2;
+            if (ok && n > 1) { // no overlong forms, surrogates or code points past U+10FFFF
+                uint32_t cp = c & (0xff >> (n + 1));
+                for (size_t k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(v[i + k]) & 0x3f);
+                ok = cp >= (n == 2 ? 0x80u : n == 3 ? 0x800u : 0x10000u) && cp <= 0x10ffff && !(cp >= 0xd800 && cp <= 0xdfff);
+            }
+            if (!ok)
+                fail(node, what + " must be valid UTF-8 without control characters (byte " + std::to_string(i) + ")");
+            i += n;
+        }
+        return v;
     }
     // An image side: the renderer's range (render::checkRenderSettings refuses the same).
     int imageSide(const yaml::Node& node, const std::string& what) const {
@@ -175,7 +205,7 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                        "a scene entry");
             if (s["renderer"]) ms.renderer = P.renderer(s["renderer"]);
             ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
-            if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
+            if (s["name"]) ms.name = P.name(s["name"], "name");
             if (s["width"]) ms.width = P.imageSide(s["width"], "width");
             if (s["height"]) ms.height = P.imageSide(s["height"], "height");
             if (s["integrator"]) {
@@ -185,7 +215,7 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                     P.fail(s["integrator"],
                            "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
             }
-            if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
+            if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp", true);
             if (const yaml::Node regions = s["regions"]) {
                 if (!regions.IsSequence())
                     P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
@@ -194,7 +224,7 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                     P.expectMap(rn, "a region");
                     P.onlyKeys(rn, {"name", "rect"}, "a region");
                     Region rg;
-                    rg.name = P.get<std::string>(P.required(rn, "name", "a region"), "region name");
+                    rg.name = P.name(P.required(rn, "name", "a region"), "region name");
                     const yaml::Node rect = P.required(rn, "rect", "a region");
                     if (!rect.IsSequence() || rect.size() != 4)
                         P.fail(rect, "rect must be [x0, y0, x1, y1], fractions of the image's width and height");
@@ -297,7 +327,7 @@ void parseReference(const Parser& P, const yaml::Node& croot, Matrix& m) {
         P.expectMap(r, "reference");
         P.onlyKeys(r, {"pattern", "spp", "seed"}, "reference");
         if (r["pattern"]) m.reference.pattern = P.pattern(r["pattern"]);
-        if (r["spp"]) m.reference.spp = P.spp(r["spp"], "reference spp");
+        if (r["spp"]) m.reference.spp = P.spp(r["spp"], "reference spp", true);
         if (r["seed"]) m.reference.seed = P.get<uint64_t>(r["seed"], "reference seed");
         if (std::find(m.seeds.begin(), m.seeds.end(), m.reference.seed) != m.seeds.end())
             P.fail(r, "the reference seed must differ from the cells' seeds (its noise would correlate with theirs)");
@@ -569,7 +599,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     const fs::path base = fs::path(path).parent_path();
     auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
 
-    m.name = croot["name"] ? P.get<std::string>(croot["name"], "name") : fs::path(path).stem().string();
+    m.name = croot["name"] ? P.name(croot["name"], "name") : fs::path(path).stem().string();
     if (croot["cache"]) m.cacheDir = resolve(P.get<std::string>(croot["cache"], "cache"));
     if (croot["threads"]) {
         m.threads = P.get<int>(croot["threads"], "threads");

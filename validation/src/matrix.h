@@ -34,6 +34,10 @@ struct ExternalCommand {
     bool empty() const { return command.empty(); }
 };
 
+// The library's limit on samples per pixel (STIPPLE_MAX_SAMPLES_PER_PIXEL in stipple.h, which the validation core
+// does not include; kept equal by hand): a matrix's spp is checked against it when read.
+inline constexpr long long kMaxSamplesPerPixel = 1ll << 20;
+
 struct MatrixScene {
     std::string name;          // used by checks and in the report; default: the file's stem
     std::string file;          // as written in the matrix

@@ -149,6 +149,14 @@ mkdir -p "$work/shadow/analytic_host"
 grep -q "cached:" "$work/shadow.log" ||
   fail "a folder named like the program earlier on PATH changed the key: $(grep -E "cached|rendered|ERROR" "$work/shadow.log")"
 
+# A FIFO given as the program is refused at once (it was opened to be hashed, and hung).
+mkfifo -m 755 "$work/fifo-host"
+timeout 60 "$bin" "$dir/external-renderer.yaml" -o "$work/fifo-prog" --cache "$work/cache" --renderer "$work/fifo-host" \
+  --renderer-command "$dir/analytic-host.command" > "$work/fifo-prog.log" 2>&1
+rc=$?
+[ $rc -eq 3 ] || fail "a FIFO as --renderer: exit $rc, expected 3"
+grep -q "which is not a regular file" "$work/fifo-prog.log" || fail "a FIFO as --renderer not named: $(tail -2 "$work/fifo-prog.log")"
+
 # 8. -o filled by someone else during the run; --references-only with a failing renderer.
 cat > "$work/fill-host.sh" << EOF
 #!/bin/sh
