@@ -76,10 +76,4 @@ private:
 // the command line named): the matrix's command template, the scene file's bytes, the size, the reference spp.
 SceneFingerprint externalFingerprint(const MatrixScene& scene, uint32_t referenceSpp);
 
-// Reads an RGB PFM ("PF", little- or big-endian, rows bottom to top) or a greyscale one ("Pf", copied to RGB).
-// When expectedWidth > 0, a header of another size is refused before any pixel memory is allocated, and the
-// file's length is compared with the header's before reading. Throws std::runtime_error naming the file and
-// what is wrong.
-render::Image readPfm(const std::string& path, int expectedWidth = 0, int expectedHeight = 0);
-
 } // namespace stipple::validation

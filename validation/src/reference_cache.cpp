@@ -122,6 +122,11 @@ std::string referenceKeyMaterial(const render::Scene& scene, const render::Rende
            "|halves";
 }
 
+render::Image readCachedImage(const std::string& path) {
+    requireRegularFile(path);
+    return render::readImage(path);
+}
+
 Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
                                 const render::RenderOptions& options, const std::string& cacheDir) {
     Reference ref;

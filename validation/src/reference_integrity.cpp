@@ -36,11 +36,6 @@ void requireRegularFile(const std::string& path) {
     if (!regular) throw std::runtime_error(path + " is not a regular file");
 }
 
-render::Image readCachedImage(const std::string& path) {
-    requireRegularFile(path);
-    return render::readImage(path);
-}
-
 Provenance parseProvenance(const std::string& jsonText) {
     nlohmann::json j = nlohmann::json::parse(jsonText, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded() || !j.is_object()) throw std::runtime_error("provenance is not a JSON object");

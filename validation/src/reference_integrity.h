@@ -34,9 +34,6 @@ std::string verifyProvenance(const Provenance& p, const std::string& key, const 
 // blocking (a FIFO, a device, a folder or a symlink in a cache is refused before any read; a FIFO never hangs).
 void requireRegularFile(const std::string& path);
 
-// An image read from a cache only after requireRegularFile.
-render::Image readCachedImage(const std::string& path);
-
 // Empty when both images have the provenance's size and checksums; otherwise what differs.
 std::string verifyPixels(const Provenance& p, const render::Image& image, const render::Image& variance);
 
