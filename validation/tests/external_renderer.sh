@@ -128,7 +128,7 @@ grep -qE "stratified, [0-9]+ spp, seed [0-9]+: the image cannot be measured: no 
 ! grep -qE "PASS +ordering" "$work/nan.log" || fail "a PASS from NaN images: $(grep -E "PASS" "$work/nan.log")"
 
 # 7. Tampered cache entries of the external reference (the cache of step 1).
-entry=$(ls "$work"/cache/external-*.key | head -1); entry=${entry%.key}
+entry=$(sed -n 's/.*cached: \(.*\)\.exr, noise floor.*/\1/p' "$work/again.log" | head -1) # step 1's entry
 cp "$entry-variance.exr" "$entry.exr"
 run "$work/tamper.log" "$bin" "$dir/external-renderer.yaml" -o "$work/tamper" --cache "$work/cache" \
   --renderer "$host" --renderer-command "$dir/analytic-host.command"
