@@ -52,6 +52,8 @@ std::string tail(const std::string& path, size_t maxBytes = 600) {
     in.seekg(from);
     in.read(text.data(), std::streamsize(text.size()));
     text.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+    for (char& c : text) // a NUL or an escape sequence of the program's must not cut or garble the message
+        if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) c = '?';
     if (from > 0) text = "..." + text;
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     return text;

@@ -18,6 +18,8 @@
 #     (no hang); a folder of the program's name earlier on PATH does not change the key (the cache is used).
 #  8. -o made into a user's folder during the run is left untouched, the new report kept beside it (exit 3);
 #     --references-only with a failing renderer says so (exit 3).
+#  9. A PFM header claiming 60000x60000 is refused by its size; a failing renderer's 300 MB log is read from its
+#     end: peak memory stays under 200 MB.
 # usage: external_renderer.sh STIPPLE_VALIDATE ANALYTIC_HOST MATRIX_DIR WORKDIR
 set -u
 bin=$1 host=$2 dir=$3 work=$4
@@ -176,6 +178,34 @@ run "$work/refonly.log" "$bin" "$dir/external-renderer.yaml" --references-only -
   --renderer "$work/fail-host.sh" --renderer-command "$dir/analytic-host.command"
 [ "$(tail -1 "$work/refonly.log")" = "exit 3" ] || fail "--references-only with a failed reference: $(tail -1 "$work/refonly.log")"
 ! grep -q "references ready" "$work/refonly.log" || fail "--references-only says ready after a failure"
+
+# 9. Memory bounded by the matrix, not by a file or a child: a PFM whose header claims 60000x60000 is refused by
+#    its size before any allocation; a failing renderer's 300 MB log is read from its end (peak RSS of the run).
+cat > "$work/liar-host.sh" << EOF
+#!/bin/sh
+while [ \$# -gt 1 ]; do [ "\$1" = --output ] && out=\$2; shift; done
+printf 'PF\\n60000 60000\\n-1.0\\n12345678' > "\$out"
+EOF
+cat > "$work/chatty-host.sh" << EOF
+#!/bin/sh
+head -c 300000000 /dev/zero | tr '\\0' x
+echo "the last words"
+exit 2
+EOF
+chmod +x "$work/liar-host.sh" "$work/chatty-host.sh"
+for h in liar chatty; do
+  python3 -c 'import resource,subprocess,sys; r=subprocess.run(sys.argv[1:]); print("exit", r.returncode, "maxrss_kib", resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)' \
+    "$bin" "$dir/external-renderer.yaml" -o "$work/$h" --cache "$work/cache-$h" --renderer "$work/$h-host.sh" \
+    --renderer-command "$dir/analytic-host.command" > "$work/$h.log" 2>&1
+done
+grep -q "the image is 60000x60000; the matrix asks for 16x12" "$work/liar.log" ||
+  fail "a lying PFM header was not refused by its size: $(grep -E "ERROR" "$work/liar.log" | head -1)"
+grep -q "its output ends: \.\.\.x*" "$work/chatty.log" && grep -q "the last words" "$work/chatty.log" ||
+  fail "the end of a long log was not shown"
+for h in liar chatty; do
+  rss=$(sed -n 's/^exit [0-9]* maxrss_kib //p' "$work/$h.log")
+  [ -n "$rss" ] && [ "$rss" -lt 200000 ] || fail "$h renderer: peak RSS ${rss:-?} KiB (expected < 200 MB)"
+done
 
 [ $ok -eq 1 ] && echo "PASSED: external renderer driven, refused without permission, bad templates and failing renderers named, matrix arguments refused, NaN images and tampered caches caught, -o rechecked"
 [ $ok -eq 1 ]
