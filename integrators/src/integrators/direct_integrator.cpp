@@ -35,10 +35,9 @@ public:
         if (useBsdf) dir_ = layout.add("b0.bsdf.dir", 2, k_);
     }
 
-    Spectrum Li(const Ray& ray, const SampleView& sv, TileContext& tile) const override {
-        SurfaceHit hit;
-        ++tile.rays;
-        if (!scene_.intersect(ray, hit)) return {};
+    Spectrum Li(const Ray& ray, const TracedHit& first, const SampleView& sv, TileContext& tile) const override {
+        if (!first.found) return {};
+        const SurfaceHit& hit = first.hit;
         Spectrum L;
         if (hit.light >= 0) L += scene_.lights()[size_t(hit.light)].L(hit.ng, -ray.d);
         if (maxDepth_ < 1) return L;

@@ -24,6 +24,12 @@ struct SurfaceHit {
     int light = -1; // index into RenderScene::lights(), -1 when the surface does not emit
 };
 
+// A ray's closest hit as a packet query returns it: `found` false when the ray leaves the scene.
+struct TracedHit {
+    bool found = false;
+    SurfaceHit hit;
+};
+
 class RenderScene {
 public:
     // Builds every Embree scene and commits it (timed: buildSeconds). Throws std::runtime_error on Embree errors.
@@ -38,6 +44,11 @@ public:
 
     // Closest hit along ray within (0, ray.tMax). Sets the FTZ/DAZ-independent results only.
     bool intersect(const Ray& ray, SurfaceHit& hit) const;
+    // Closest hits of up to kPacketSize rays that start together (one pixel's camera rays) in one packet query:
+    // the same hits as intersect() on each ray, found by traversing the BVH once for the bundle (one ray at a
+    // time in scenes with instances, where Embree's packet hits are not bitwise its single-ray hits).
+    static constexpr int kPacketSize = 16;
+    void intersectPacket(const Ray* rays, int count, TracedHit* hits) const;
     // Any hit along ray within (0, tMax).
     bool occluded(const Ray& ray) const;
     // Shadow ray between a surface point (normal ng) and a light point; true when something lies between.
@@ -70,7 +81,9 @@ private:
     void buildGroup(Group& group, const ShapeGroup& shapes, bool topLevel);
     void addLightsOf(const ShapeGroup& shapes, const Transform* toWorld, std::vector<int>& lightOfGeom,
                      const std::string& where);
-    void resolveHit(const RTCRayHit& rh, const Ray& ray, SurfaceHit& hit) const;
+    // The hit record's primitive as a surface point; hitT/u/v/ids as Embree returned them.
+    void resolveHit(unsigned instID, unsigned geomID, unsigned primID, float hitT, float u, float v, const Ray& ray,
+                    SurfaceHit& hit) const;
 
     SceneDescription desc_;
     RTCDevice device_ = nullptr;
