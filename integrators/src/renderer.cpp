@@ -207,6 +207,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
         constexpr int kPacket = RenderScene::kPacketSize;
         Ray cameraRays[kPacket];
         TracedHit firstHits[kPacket];
+        Spectrum radiance[kPacket];
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 sampler.startPixel(uint32_t(x), uint32_t(y), samples);
@@ -220,11 +221,9 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
                     }
                     scene_.intersectPacket(cameraRays, n, firstHits);
                     ctx.rays += uint64_t(n);
-                    for (int k = 0; k < n; ++k) {
-                        const SampleView sv(samples, i0 + uint32_t(k));
-                        Spectrum L = integrator->Li(cameraRays[k], firstHits[k], sv, ctx);
-                        if (!film.addSample(x, y, L)) ++nonFinite[t];
-                    }
+                    integrator->LiPacket(cameraRays, firstHits, samples, i0, n, ctx, radiance);
+                    for (int k = 0; k < n; ++k)
+                        if (!film.addSample(x, y, radiance[k])) ++nonFinite[t];
                 }
             }
         }

@@ -41,6 +41,13 @@ public:
     // Radiance along a camera ray for one camera sample, given the ray's closest hit (the render loop traces a
     // pixel's camera rays in packets and counts them). Light-tracing contributions go to tile.splats.
     virtual Spectrum Li(const Ray& ray, const TracedHit& first, const SampleView& samples, TileContext& tile) const = 0;
+    // The radiance of `count` (<= RenderScene::kPacketSize) consecutive camera samples of one pixel, from sample
+    // index firstSample on: what Li returns for each. An integrator whose next rays stay coherent within a pixel
+    // traces them in packets here; the default calls Li in sample order.
+    virtual void LiPacket(const Ray* rays, const TracedHit* firsts, const PixelSamples& samples, uint32_t firstSample,
+                          int count, TileContext& tile, Spectrum* L) const {
+        for (int k = 0; k < count; ++k) L[k] = Li(rays[k], firsts[k], SampleView(samples, firstSample + uint32_t(k)), tile);
+    }
 };
 
 // "path", "direct", "direct-light" (light sampling only), "direct-bsdf" (BSDF sampling only), "bdpt" when built.

@@ -85,6 +85,7 @@ class SampleView {
 public:
     SampleView(const PixelSamples& p, uint32_t sampleIndex) : p_(&p), i_(sampleIndex) {}
     uint32_t sampleIndex() const { return i_; }
+    const PixelSamples& pixel() const { return *p_; }
     float get1D(int dim, uint32_t j = 0) const {
         if (dim < 0) return 0.5f;
         return p_->values(uint32_t(dim), i_)[j * p_->arity_[dim]];

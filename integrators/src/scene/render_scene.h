@@ -49,6 +49,10 @@ public:
     // time in scenes with instances, where Embree's packet hits are not bitwise its single-ray hits).
     static constexpr int kPacketSize = 16;
     void intersectPacket(const Ray* rays, int count, TracedHit* hits) const;
+    // Whether each of up to kPacketSize rays (tMax set) is blocked, in one packet query (one at a time with instances).
+    void occludedPacket(const Ray* rays, int count, bool* blocked) const;
+    // The shadow ray occludedBetween traces: false when there is none to trace (the points coincide).
+    static bool shadowRay(const Vec3& p, const Vec3& ng, const Vec3& target, Ray& ray);
     // Any hit along ray within (0, tMax).
     bool occluded(const Ray& ray) const;
     // Shadow ray between a surface point (normal ng) and a light point; true when something lies between.
@@ -91,6 +95,9 @@ private:
     std::vector<Group> objects_;
     std::vector<InstanceRecord> instances_;
     std::vector<std::vector<float>> vertexBuffers_; // padded by one float (Embree reads 16 bytes)
+    // Per top-level mesh, per triangle: the unit geometric normal, computed once at build time exactly as a hit
+    // would compute it (instanced meshes transform the unnormalized cross product instead, so they have none).
+    std::vector<std::vector<Vec3>> topMeshNormals_;
     std::vector<Light> lights_;
     DiscreteDistribution lightChoice_;
     double buildSeconds_ = 0;
