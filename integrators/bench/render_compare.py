@@ -11,8 +11,9 @@ Each DIR is a build tree (or a copy of one) holding bin/stipple-render and lib/l
 builds run in alternation, K rounds of one process each (the order flips every round: ABBA...), so that the load of
 a shared machine falls on both alike. A run's rate is the image's samples (width x height x spp) over the render
 time the program reports (wall clock, scene loading and the BVH build excluded); beside it, the rate per CPU second
-of the whole process (getrusage of the child: user + system, loading included), which time-slicing with other
-processes does not inflate. Per case: each build's median rate, the
+of rendering, which time-slicing with other processes does not inflate: the process's CPU time (getrusage of the
+child, user + system) minus that of the same build rendering 1 spp (the median of 3 such runs per case and build:
+program start, scene loading, BVH build and one sample per pixel). Per case: each build's median rate, the
 median of the per-round ratios candidate / baseline, and a distribution-free 95 % interval of that median (order
 statistics of the K ratios, binomial coverage >= 95 %; K >= 6 is needed for one). The load average (1 min) before
 and after every case is printed with it. With --bound, exit status 1 when some case's interval does not lie
@@ -31,16 +32,17 @@ import subprocess
 import sys
 import tempfile
 
-# The four scenes with the integrator each is made for, at the spp of their default renders.
+# The four scenes with the integrator each is made for, and the path tracer on each; the spp keep a run near one
+# CPU second of rendering on the machine the project is developed on.
 DEFAULT_CASES = [
-    ("cornell-box", "path", 64),
-    ("cornell-box", "bdpt", 16),
-    ("cornell-box", "direct", 64),
-    ("veach-mis", "direct", 64),
-    ("veach-bidir", "bdpt", 16),
-    ("veach-bidir", "path", 64),
-    ("italian-city", "bdpt", 8),
-    ("italian-city", "path", 16),
+    ("cornell-box", "path", 16),
+    ("cornell-box", "bdpt", 4),
+    ("veach-mis", "direct", 32),
+    ("veach-mis", "path", 16),
+    ("veach-bidir", "bdpt", 4),
+    ("veach-bidir", "path", 16),
+    ("italian-city", "bdpt", 4),
+    ("italian-city", "path", 8),
 ]
 
 RENDER_LINE = re.compile(r"^render ([0-9.eE+-]+) s \((\d+)x(\d+), (\d+) spp")
@@ -51,7 +53,7 @@ def load_average():
         return float(f.read().split()[0])
 
 
-def render(build, scene_path, integrator, spp, threads, shim, out_dir):
+def render(build, scene_path, integrator, spp, threads, shim, out_dir, fixed_cpu=0.0):
     exe = os.path.join(build, "bin", "stipple-render")
     cmd = [exe, scene_path, "--integrator", integrator, "--spp", str(spp), "--threads", str(threads),
            "--pattern", "stratified", "--seed", "1", "-o", os.path.join(out_dir, "bench.exr")]
@@ -67,7 +69,7 @@ def render(build, scene_path, integrator, spp, threads, shim, out_dir):
         m = RENDER_LINE.match(line)
         if m:
             seconds, w, h, n = float(m.group(1)), int(m.group(2)), int(m.group(3)), int(m.group(4))
-            return w * h * n / seconds, w * h * n / cpu
+            return w * h * n / seconds, w * h * (n - 1) / max(1e-9, cpu - fixed_cpu), cpu
     sys.exit(f"render_compare: no 'render ... s' line in the output of {' '.join(cmd)}")
 
 
@@ -88,8 +90,8 @@ def parse_cases(text):
     cases = []
     for item in text.split(","):
         parts = item.split(":")
-        if len(parts) != 3 or not parts[2].isdigit() or int(parts[2]) < 1:
-            sys.exit(f"render_compare: --cases: expected SCENE:INTEGRATOR:SPP, got '{item}'")
+        if len(parts) != 3 or not parts[2].isdigit() or int(parts[2]) < 2:
+            sys.exit(f"render_compare: --cases: expected SCENE:INTEGRATOR:SPP with SPP >= 2, got '{item}'")
         cases.append((parts[0], parts[1], int(parts[2])))
     return cases
 
@@ -126,13 +128,17 @@ def main(argv):
         for scene, integrator, spp in cases:
             path = os.path.join(o.scenes_dir, scene + ".yaml")
             load_before = load_average()
+            fixed = {}
+            for which, build in (("baseline", o.baseline), ("candidate", o.candidate)):
+                fixed[which] = statistics.median(
+                    render(build, path, integrator, 1, o.threads, o.shim, out_dir)[2] for _ in range(3))
             base, cand, ratios, cpu_ratios = [], [], [], []
             for r in range(o.rounds):
                 order = ("baseline", "candidate") if r % 2 == 0 else ("candidate", "baseline")
                 rate = {}
                 for which in order:
                     build = o.baseline if which == "baseline" else o.candidate
-                    rate[which] = render(build, path, integrator, spp, o.threads, o.shim, out_dir)
+                    rate[which] = render(build, path, integrator, spp, o.threads, o.shim, out_dir, fixed[which])
                 base.append(rate["baseline"][0])
                 cand.append(rate["candidate"][0])
                 ratios.append(rate["candidate"][0] / rate["baseline"][0])

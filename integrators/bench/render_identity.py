@@ -5,7 +5,7 @@
 """Whether two stipple-render builds make the same images, bit for bit, for a fixed seed.
 
     python3 integrators/bench/render_identity.py --baseline DIR --candidate DIR [--spp N (8)]
-        [--scenes-dir DIR] [--patterns P,... (stratified,sobol)] [--threads T (2)]
+        [--scenes-dir DIR] [--scenes S,... (all four)] [--patterns P,... (stratified,sobol)] [--threads T (2)]
 
 Each DIR is a build tree (or a copy of one) holding bin/stipple-render and lib/libstipple.so.1. Every scene is
 rendered with every integrator (path, bdpt, direct, direct-light, direct-bsdf) and pattern by both builds with seed 7
@@ -40,6 +40,7 @@ def main(argv):
     parser.add_argument("--candidate", required=True)
     parser.add_argument("--spp", type=int, default=8)
     parser.add_argument("--scenes-dir", default=os.path.join(here, "..", "..", "scenes"))
+    parser.add_argument("--scenes", default=",".join(SCENES))
     parser.add_argument("--patterns", default="stratified,sobol")
     parser.add_argument("--threads", type=int, default=2)
     o = parser.parse_args(argv)
@@ -52,7 +53,7 @@ def main(argv):
     differing = 0
     total = 0
     with tempfile.TemporaryDirectory(prefix="render_identity.") as tmp:
-        for scene in SCENES:
+        for scene in o.scenes.split(","):
             path = os.path.join(o.scenes_dir, scene + ".yaml")
             if not os.path.exists(path):
                 sys.exit(f"render_identity: no {scene}.yaml in {o.scenes_dir}")
@@ -61,7 +62,8 @@ def main(argv):
                     a, b = os.path.join(tmp, "baseline.exr"), os.path.join(tmp, "candidate.exr")
                     render(o.baseline, path, integrator, pattern, o.spp, o.threads, a)
                     render(o.candidate, path, integrator, pattern, o.spp, o.threads, b)
-                    same = subprocess.run([idiff, "-fail", "0", "-warn", "0", a, b], capture_output=True).returncode == 0
+                    compared = subprocess.run([idiff, "-fail", "0", "-warn", "0", a, b], capture_output=True)
+                    same = compared.returncode == 0
                     total += 1
                     differing += not same
                     print(f"{scene:<14}{integrator:<14}{pattern:<12}{'identical' if same else 'DIFFERENT'}", flush=True)

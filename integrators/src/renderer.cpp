@@ -229,7 +229,7 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
         }
         rays[t] = ctx.rays;
         nonFinite[t] += ctx.splats->nonFinite();
-        samplerSeconds[t] = samples.samplerSeconds;
+        samplerSeconds[t] = samples.samplerSeconds();
         cpuSeconds[t] = threadCpuSeconds() - cpuStart;
         progress.tick();
     };

@@ -74,7 +74,8 @@ public:
                 const Material& m = *hit.material;
                 const SampleView sv(samples, firstSample + uint32_t(k));
                 float pmf = 1;
-                size_t li = scene_.lights().size() == 1 ? 0 : scene_.lightChoice().sample(sv.get1D(lightChoice_, j), &pmf);
+                size_t li =
+                    scene_.lights().size() == 1 ? 0 : scene_.lightChoice().sample(sv.get1D(lightChoice_, j), &pmf);
                 LightLiSample ls;
                 if (!scene_.lights()[li].sampleLi(hit.p, sv.get2D(lightPos_, j), ls)) continue;
                 Vec3 wi = frames[k].toLocal(ls.wi);

@@ -46,7 +46,8 @@ public:
     // traces them in packets here; the default calls Li in sample order.
     virtual void LiPacket(const Ray* rays, const TracedHit* firsts, const PixelSamples& samples, uint32_t firstSample,
                           int count, TileContext& tile, Spectrum* L) const {
-        for (int k = 0; k < count; ++k) L[k] = Li(rays[k], firsts[k], SampleView(samples, firstSample + uint32_t(k)), tile);
+        for (int k = 0; k < count; ++k)
+            L[k] = Li(rays[k], firsts[k], SampleView(samples, firstSample + uint32_t(k)), tile);
     }
 };
 

@@ -52,13 +52,15 @@ private:
 class PixelSamples {
 public:
     explicit PixelSamples(const PixelSampler& sampler);
-    // Time spent inside the shim, estimated by sampling: a batch call is timed with probability 1/kTimedEvery
-    // (a pseudo-random choice, so that no dimension or pixel pattern aliases with it) and its interval, minus the
-    // clock's own cost (the mean of 4096 empty intervals, measured once per sampler, as benchmark harnesses
-    // subtract their timer overhead), counts kTimedEvery times: an unbiased estimate of the total for two clock
-    // reads per kTimedEvery calls instead of two per call.
+    // Time spent inside the shim, estimated by sampling pixels: the batch calls of every kTimedEvery-th pixel this
+    // cache starts are timed, each interval minus the clock's own cost (the mean of 4096 empty intervals, measured
+    // once per sampler, as benchmark harnesses subtract their timer overhead), and the sum is scaled by pixels
+    // started over pixels timed. Whole pixels, so that every dimension a pixel reaches is timed alike; two clock
+    // reads per call on one pixel in kTimedEvery instead of on all.
     static constexpr uint32_t kTimedEvery = 16;
-    mutable double samplerSeconds = 0;
+    double samplerSeconds() const {
+        return pixelsTimed_ > 0 ? timedSeconds_ * double(pixels_) / double(pixelsTimed_) : 0.0;
+    }
 
 private:
     friend class PixelSampler;
@@ -71,7 +73,9 @@ private:
 
     const PixelSampler* sampler_;
     uint32_t x_ = 0, y_ = 0;
-    mutable uint32_t timingState_ = 0x9e3779b9u; // xorshift32 state of the timing choice
+    uint64_t pixels_ = 0, pixelsTimed_ = 0; // started by this cache; of them, timed
+    bool timed_ = false;                    // the current pixel's calls are timed
+    mutable double timedSeconds_ = 0;
     mutable std::vector<uint8_t> held_;      // per dimension: drawn for the current pixel
     std::vector<uint32_t> arity_;            // per dimension
     std::vector<size_t> perSample_;          // per dimension, k*arity floats of one sample
