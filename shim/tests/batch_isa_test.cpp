@@ -11,6 +11,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "batch_isa.h"
+#include "sampler_fixture.h"
 
 #include <stipple/stipple.h>
 
@@ -134,6 +135,20 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
                 }
     }
     stipple::detail::forceBatchIsa(widest);
+}
+
+// The fixture's lists are the library's: every pattern, and the blue-noise flag accepted exactly where the
+// pattern's limits say so.
+BOOST_AUTO_TEST_CASE(the_test_lists_are_the_library_s) {
+    const std::vector<PatternUnderTest> patterns = everyPattern();
+    BOOST_REQUIRE_EQUAL(patterns.size(), stipple::test::kAllPatterns.size());
+    std::vector<uint32_t> accepting, refusing;
+    for (const PatternUnderTest& p : patterns)
+        (p.limits.flags & STIPPLE_SAMPLER_FLAG_BLUE_NOISE ? accepting : refusing).push_back(p.id);
+    BOOST_CHECK(accepting == std::vector<uint32_t>(std::begin(stipple::test::kBlueNoisePatterns),
+                                                   std::end(stipple::test::kBlueNoisePatterns)));
+    BOOST_CHECK(refusing == std::vector<uint32_t>(std::begin(stipple::test::kBlueNoiseRefused),
+                                                  std::end(stipple::test::kBlueNoiseRefused)));
 }
 
 BOOST_AUTO_TEST_CASE(forcing_is_clamped_to_the_cpu) {
