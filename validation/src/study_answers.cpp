@@ -36,14 +36,15 @@ std::string patternLabel(const std::string& p) {
     return patternHeader(p);
 }
 
-// A verdict as a comparison of A with B, in words.
-const char* verdictWords(Verdict v) {
+// A verdict as a comparison of A with B, in words; `b` empty: B was named in the clause already.
+std::string verdictWords(Verdict v, const std::string& b) {
+    const bool named = !b.empty();
     switch (v) {
-    case Verdict::Equivalent: return "as good as";
-    case Verdict::Better: return "better than";
-    case Verdict::Worse: return "worse than";
-    case Verdict::NotSeparated: return "not separated from";
-    case Verdict::Unmeasured: return "not measured against";
+    case Verdict::Equivalent: return named ? "as good as " + b : "as good";
+    case Verdict::Better: return named ? "better than " + b : "better";
+    case Verdict::Worse: return named ? "worse than " + b : "worse";
+    case Verdict::NotSeparated: return named ? "not separated from " + b : "not separated";
+    case Verdict::Unmeasured: return named ? "not measured against " + b : "not measured";
     }
     return "?";
 }
@@ -76,7 +77,7 @@ std::string verdictSummary(const std::vector<const VerdictRow*>& vs, const std::
                 places.push_back(placeOf(*v));
             }
         if (ratios.empty()) continue;
-        s += (s.empty() ? "" : "; ") + std::string(verdictWords(word)) + (s.empty() ? " " + patternHeader(b) : "");
+        s += (s.empty() ? "" : "; ") + verdictWords(word, s.empty() ? patternLabel(b) : "");
         if (ratios.size() == vs.size() && vs.size() > 1) s += fmt(" in %zu of %zu %s", vs.size(), vs.size(), unit);
         else if (ratios.size() > 2) s += fmt(" in %zu of %zu %s", ratios.size(), vs.size(), unit);
         else {
