@@ -152,7 +152,7 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
             const bool bySeconds = kind == 1;
             const std::string stem = base + (bySeconds ? "-error-seconds" : "-error-spp");
             std::string common = "set logscale xy\nset grid\nunset key\nset format y '%g'\nset format x '%g'\n"
-                                 "set tmargin 2\nset bmargin 3\nset lmargin 8\nset rmargin 1\n";
+                                 "set tmargin 2\nset bmargin 3\nset lmargin 9\nset rmargin 1\nset ylabel 'relative RMS' offset 1,0\n";
             common += bySeconds ? "set xlabel 'median CPU seconds' offset 0,0.5\n"
                                 : "set xlabel 'samples per pixel' offset 0,0.5\n";
             common += bySeconds ? range("x", tMin, tMax) : range("x", xMin, xMax);
@@ -162,14 +162,11 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
                 common += "set xtics (" + tics + ")\n";
             }
             common += range("y", yMin, yMax);
-            const std::string title =
-                scene.name + (bySeconds ? ": the verdicts' error (relative RMS) against CPU time"
-                                        : ": the verdicts' error (relative RMS) against spp, 95% intervals");
             for (const char* terminal : {"pngcairo size 1200,%zu font ',9'", "svg size 1200,%zu font ',9'"}) {
                 const bool png = terminal[0] == 'p';
-                script += "reset\nset terminal " + fmt(terminal, 40 + 250 * rows) + "\nset output " +
-                          gq(stem + (png ? ".png" : ".svg")) + "\n" + fmt("set multiplot layout %zu,%zu title ", rows, columns) +
-                          gq(title) + " noenhanced\n" + common + panels(bySeconds) + "unset multiplot\nunset output\n";
+                script += "reset\nset terminal " + fmt(terminal, 250 * rows) + "\nset output " +
+                          gq(stem + (png ? ".png" : ".svg")) + "\n" + fmt("set multiplot layout %zu,%zu\n", rows, columns) +
+                          common + panels(bySeconds) + "unset multiplot\nunset output\n";
             }
         }
     }
@@ -303,7 +300,7 @@ const char* const kReportStyle =
     "text-align:right;vertical-align:top}th{background:#eee}td:first-child{text-align:left}"
     ".PASS{color:#080}.FAIL{color:#c00;font-weight:bold}.NOT{color:#a60}"
     "pre{background:#f6f6f6;padding:0.6em;white-space:pre-wrap;overflow-wrap:anywhere;font-size:85%;margin:0.3em 0}"
-    "img{max-width:100%;height:auto}img.crop{image-rendering:pixelated}img.plot{width:100%;display:block}"
+    "img{max-width:100%;height:auto}img.crop{image-rendering:pixelated}img.plot{width:100%;display:block}figure.plot{margin:0}"
     ".answers{margin:0.4em 0}.answers h2{margin:0.3em 0;font-size:120%}.answer{margin:0.35em 0}"
     ".headline{background:#f4f7fb;border-left:4px solid #456;padding:0 1em}.counts{font-size:110%;margin:0.4em 0}"
     ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0}figcaption{text-align:center;font-size:90%}"
@@ -382,9 +379,12 @@ std::string sceneSectionHtml(const std::string& dir, const ReportInputs& in, con
     const std::string b = safeName(scene.name);
     std::ostringstream o;
     o << "<section class=\"scene\" id=\"scene-" << b << "\"><h2>" << html(scene.name) << "</h2>\n";
-    o << "<img class=\"plot\" src=\"plots/" << b << "-error-spp.png\" alt=\"" << html(scene.name)
+    o << "<figure class=\"plot\"><img class=\"plot\" src=\"plots/" << b << "-error-spp.png\" alt=\""
+      << html(scene.name)
       << ": the verdicts' error against samples per pixel, one panel per pattern (the others in grey), 95% "
-         "intervals\">\n<div class=\"top\">";
+         "intervals\"><figcaption>The verdicts' error (relative RMS, <a href=\"#deciding\">what it is</a>) against "
+         "samples per pixel, 95% intervals: one panel per pattern, the other patterns in grey.</figcaption></figure>\n"
+         "<div class=\"top\">";
     const std::string picture = "crops/" + b + "-reference-full.png";
     if (fs::exists(fs::path(dir) / picture))
         o << "<img src=\"" << picture << "\" alt=\"" << html(scene.name) << ": the reference, tone-mapped\">";
