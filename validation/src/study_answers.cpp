@@ -18,11 +18,16 @@ ClaimCounts countClaims(const std::vector<CheckOutcome>& outcomes) {
     ClaimCounts n;
     for (const auto& o : outcomes) {
         ++n.total;
-        if (o.failsRun) ++n.fail;
-        else if (o.status == CheckStatus::Pass) ++n.pass;
-        else if (o.status == CheckStatus::NotSeparated) ++n.notSeparated;
-        else if (!o.check.study.empty()) ++n.refuted;
-        else ++n.reported;
+        if (o.failsRun)
+            ++n.fail;
+        else if (o.status == CheckStatus::Pass)
+            ++n.pass;
+        else if (o.status == CheckStatus::NotSeparated)
+            ++n.notSeparated;
+        else if (!o.check.study.empty())
+            ++n.refuted;
+        else
+            ++n.reported;
     }
     return n;
 }
@@ -78,8 +83,10 @@ std::string verdictSummary(const std::vector<const VerdictRow*>& vs, const std::
             }
         if (ratios.empty()) continue;
         s += (s.empty() ? "" : "; ") + verdictWords(word, s.empty() ? patternLabel(b) : "");
-        if (ratios.size() == vs.size() && vs.size() > 1) s += fmt(" in %zu of %zu %s", vs.size(), vs.size(), unit);
-        else if (ratios.size() > 2) s += fmt(" in %zu of %zu %s", ratios.size(), vs.size(), unit);
+        if (ratios.size() == vs.size() && vs.size() > 1)
+            s += fmt(" in %zu of %zu %s", vs.size(), vs.size(), unit);
+        else if (ratios.size() > 2)
+            s += fmt(" in %zu of %zu %s", ratios.size(), vs.size(), unit);
         else {
             s += " in ";
             for (size_t i = 0; i < places.size(); ++i) s += (i ? " and " : "") + places[i];
@@ -120,7 +127,9 @@ std::string checkClauses(const CheckOutcome& o) {
     const Check& k = o.check;
     if (k.type != CheckType::Compare) {
         // An ordering by efficiency (equal_time / equal_spp, on plain MSE or FLIP): the order it claims, where.
-        const char* word = o.status == CheckStatus::Pass ? "holds" : o.status == CheckStatus::Fail ? "refuted" : "undecided";
+        const char* word = o.status == CheckStatus::Pass   ? "holds"
+                           : o.status == CheckStatus::Fail ? "refuted"
+                                                           : "undecided";
         const char* cls = o.status == CheckStatus::Pass ? "PASS" : o.status == CheckStatus::Fail ? "FAIL" : "NOT";
         std::string order;
         for (const auto& p : k.order) order += (order.empty() ? "" : " ahead of ") + patternHeader(p);
@@ -162,11 +171,14 @@ std::string stratifiedSentence(const ReportInputs& in) {
         if (rows.empty()) continue;
         std::vector<const VerdictRow*> vs;
         for (const auto& v : rows) vs.push_back(&v);
-        s += (s.empty() ? patternHeader("stratified") + " " : "; ") + std::string(equalTime ? "at equal CPU time" : "per sample") +
-             " is " + verdictSummary(vs, "independent", false);
+        s += (s.empty() ? patternHeader("stratified") + " " : "; ") +
+             std::string(equalTime ? "at equal CPU time" : "per sample") + " is " +
+             verdictSummary(vs, "independent", false);
     }
-    return s.empty() ? "" : "<p class=\"answer\"><strong>Stratified against independent</strong> (the library's own "
-                            "footing): " + s + ".</p>\n";
+    return s.empty() ? ""
+                     : "<p class=\"answer\"><strong>Stratified against independent</strong> (the library's own "
+                       "footing): " +
+                           s + ".</p>\n";
 }
 
 } // namespace

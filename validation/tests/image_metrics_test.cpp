@@ -108,7 +108,8 @@ BOOST_AUTO_TEST_CASE(a_small_lights_edge_cannot_decide_the_relative_error) {
     const size_t edge = 1 * 8 + 1; // block (1, 1) of 8 × 8
     // Without the reference's noise (a quiet variance image everywhere) the edge block holds nearly all of it.
     const Image quiet = filled(64, 64, 1e-4f, 1e-4f, 1e-4f);
-    const double before = blockShare(blockRelativeSquaredErrors(ref, im, relativeErrorWeights(ref, quiet), 0, 0, 64, 64), edge);
+    const double before =
+        blockShare(blockRelativeSquaredErrors(ref, im, relativeErrorWeights(ref, quiet), 0, 0, 64, 64), edge);
     BOOST_CHECK_GT(before, 0.9);
     // With it, the block counts by its error relative to its own noise, as one block of 64.
     const std::vector<float> w = relativeErrorWeights(ref, noise);
