@@ -4,7 +4,9 @@
 # Installs the Debian 12 packages a job needs. Idempotent: when everything is present it only checks.
 # Non-interactive (CI has no standard input); never installs recommended extras.
 #
-#   bash ci/install-deps.sh [SET...]     SET: main or tests (default: both)
+#   bash ci/install-deps.sh [SET...]         SET: main or tests (default: both)
+#   bash ci/install-deps.sh --list [SET...]  print the packages of the sets, one a line, and install nothing
+#                                            (ci/check_package_sets.py compares them with what configure uses)
 #     main   what ci/main.sh builds and runs: the shim, the renderer, stipple-validate and the Figure 3 program
 #     tests  what ci/test.sh adds: Boost.Test, Google Benchmark, the tests' tools (python3, abidiff, Chromium,
 #            a one-node Slurm) and clang for the fuzz harnesses
@@ -17,6 +19,7 @@ main_packages=(
   libyaml-cpp-dev nlohmann-json3-dev
   libboost-dev            # Boost.Math (statistics/)
   gnuplot-nox             # the report's and Figure 3's plots
+  openimageio-tools       # OpenImageIO's CMake config names its tools (/usr/bin/iconvert ...): configure fails without them
 )
 test_packages=(
   libboost-test-dev
@@ -28,10 +31,12 @@ test_packages=(
   chromium                # headless: the report's browser test (validation.report_browser)
   clang libclang-rt-14-dev                     # ci/fuzz.sh: libFuzzer harnesses
   slurm-wlm slurmctld slurmd slurm-client munge # validation.slurm_array_equals_single_run
-  openimageio-tools       # oiiotool, for the scenes' previews (scenes/README.md)
-  python3-venv python3-pip python3-setuptools   # the Python package: its tests and the offline pip install
+  python3-venv python3-pip python3-setuptools python3-wheel   # the Python package: its tests and the offline pip install
+  python3-scipy           # the Python package's scipy.stats.qmc adapter and its test
 )
 
+list_only=0
+if [ "${1:-}" = --list ]; then list_only=1; shift; fi
 sets=("$@")
 [ ${#sets[@]} -gt 0 ] || sets=(main tests)
 packages=()
@@ -42,6 +47,11 @@ for set in "${sets[@]}"; do
     *) echo "install-deps: unknown set '$set' (known: main, tests)" >&2; exit 2 ;;
   esac
 done
+
+if [ "$list_only" -eq 1 ]; then
+  printf '%s\n' "${packages[@]}" | sort -u
+  exit 0
+fi
 
 missing=()
 for p in $(printf '%s\n' "${packages[@]}" | sort -u); do

@@ -19,9 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The library the renderer would pick with no option: $STIPPLE_SHIM, else <exe dir>/../lib.
+// The library the renderer would pick with no option: $STIPPLE_LIBRARY (or $STIPPLE_SHIM), else <exe dir>/../lib.
 fs::path defaultShim() {
-    if (const char* env = std::getenv("STIPPLE_SHIM"); env && *env) return env;
+    for (const char* variable : {"STIPPLE_LIBRARY", "STIPPLE_SHIM"})
+        if (const char* env = std::getenv(variable); env && *env && !fs::is_directory(env)) return env;
     char exe[PATH_MAX];
     ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
     BOOST_REQUIRE(n > 0);

@@ -31,7 +31,7 @@ const char* const kRenderUsage =
     "  --max-depth D      longest path, 0..1000 bounces (default: the scene's render.max_depth)\n"
     "  --threads T        render threads, 0..1024 (default: 0 = all hardware threads)\n"
     "  --exposure STOPS   exposure of the PNG preview only, -64..64 stops (default: 0)\n"
-    "  --shim PATH        libstipple.so.1 to load (default: $STIPPLE_SHIM, else the one beside this program)\n"
+    "  --shim PATH        libstipple.so.1 to load (default: $STIPPLE_LIBRARY, else the one beside this program)\n"
     "  --print-layout     print the dimension layout declared to the shim and stop (default: off)\n"
     "  -o, --output FILE  the EXR to write, ending in .exr; its PNG gets the same stem (default: the scene's\n"
     "                     name, made safe, .exr in the working folder)\n"

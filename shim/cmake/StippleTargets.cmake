@@ -15,11 +15,16 @@ function(_stipple_link_choice source target)
   set(_stipple_text "${text}" PARENT_SCOPE)
 endfunction()
 
-# A program of bench/ that is not a Google Benchmark (e.g. the study's Figure 3): built without the benchmarks.
+# A program of bench/ that is not a Google Benchmark (e.g. the study's Figure 3): defined without the benchmarks,
+# but built by default only with them or the tests (ci/main.sh names the Figure 3 program it needs).
 function(stipple_add_bench_program source)
   get_filename_component(stem ${source} NAME_WE)
   set(target shim_${stem})
-  add_executable(${target} ${source})
+  if(STIPPLE_BUILD_BENCHMARKS OR STIPPLE_BUILD_TESTS)
+    add_executable(${target} ${source})
+  else()
+    add_executable(${target} EXCLUDE_FROM_ALL ${source})
+  endif()
   _stipple_link_choice(${source} ${target})
   target_link_libraries(${target} PRIVATE stipple_version stipple_analysis)
 endfunction()

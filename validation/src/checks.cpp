@@ -190,6 +190,7 @@ const Fields<CheckOutcome>& outcomeFields() {
         text("where", [](const O& o) { return o.check.where; }),
         text("status", [](const O& o) { return std::string(checkStatusName(o.status)); }),
         field("fails_run", &O::failsRun),
+        text("study", [](const O& o) { return o.check.study; }),
         field("claim", &O::claim),
         {"figures",
          [](const O& o) { return Json(o.figures); },

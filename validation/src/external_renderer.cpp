@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -331,6 +332,13 @@ Reference ExternalRenderer::reference(const render::RenderOptions& o, const std:
     const render::RenderResult a = render(half);
     half.seed = seeds[1];
     const render::RenderResult b = render(half);
+    // Equal halves: the program ignores {seed} or maps both seeds to one value; every verdict would be confident
+    // and wrong.
+    if (a.image.rgb == b.image.rgb)
+        throw std::runtime_error(scene_.name + ": the reference's two halves (seeds " + std::to_string(seeds[0]) +
+                                 " and " + std::to_string(seeds[1]) + ", " + std::to_string(half.spp) +
+                                 " spp) are bitwise equal: the renderer ignores {seed} or maps these seeds to one "
+                                 "value ({seed} is any unsigned 64-bit number)");
     ref.image = a.image;
     ref.variance = a.image;
     for (size_t i = 0; i < a.image.rgb.size(); ++i) {

@@ -23,6 +23,7 @@
 #include "external_renderer.h"
 #include "cli_args.h"
 #include "matrix.h"
+#include "identical_renders.h"
 #include "merge.h"
 #include "preflight.h"
 #include "progress.h"
@@ -169,6 +170,8 @@ int main(int argc, char** argv) {
                                 " only: checks are evaluated by --merge."
                           : "";
         for (const auto& k : results.skipped) in.note += " ERROR, scene skipped: " + k.error + ".";
+        const std::vector<std::string> identical = identicalSeedRenders(results.rows);
+        for (const auto& line : identical) in.note += " ERROR: " + line + ".";
         BaselineComparison baseline;
         if (!args.baseline.empty()) {
             Results base = readResultsJson(args.baseline);
@@ -209,7 +212,8 @@ int main(int argc, char** argv) {
                     in.baseline ? (baseline.failed ? ", baseline failed" : ", baseline passed") : "", wall,
                     (fs::path(args.out) / "index.html").string().c_str());
         for (const auto& k : results.skipped) std::cerr << "stipple-validate: scene skipped: " << k.error << "\n";
-        if (!results.skipped.empty()) return kExitError;
+        for (const auto& line : identical) std::cerr << "stipple-validate: " << line << "\n";
+        if (!results.skipped.empty() || !identical.empty()) return kExitError;
         return failed ? kExitChecksFailed : 0;
     } catch (const std::bad_alloc&) {
         std::cerr << "stipple-validate: out of memory\n";

@@ -519,12 +519,20 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 if (c["region"]) {
                     k.region = P.get<std::string>(c["region"], "region");
-                    const MatrixScene* ms = m.findScene(k.scene);
-                    bool known = k.region == "image";
-                    for (const auto& r : ms ? ms->regions : std::vector<Region>{}) known |= r.name == k.region;
-                    if (!known)
-                        P.fail(c["region"], "region must be 'image' or a region of the one scene named, got '" +
-                                                k.region + "'");
+                    // With scene: all, a region every scene has (one claim for a region the scenes share).
+                    std::vector<std::string> lacking;
+                    for (const auto& s : m.scenes) {
+                        if (k.scene != "all" && s.name != k.scene) continue;
+                        bool has = false;
+                        for (const auto& r : s.regions) has |= r.name == k.region;
+                        if (!has) lacking.push_back(s.name);
+                    }
+                    if (k.region != "image" && !lacking.empty())
+                        P.fail(c["region"], k.scene == "all"
+                                                ? "region '" + k.region + "' is not a region of every scene (" +
+                                                      joined(lacking) + " lack it); 'image' or a region all have"
+                                                : "region must be 'image' or a region of the one scene named, got '" +
+                                                      k.region + "'");
                 }
                 const yaml::Node patterns = P.required(c, "patterns", what);
                 if (!patterns.IsSequence() || patterns.size() < 2)

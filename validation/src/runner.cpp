@@ -170,7 +170,7 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
     const FlipMaps flip = ldrFlipLinear(ref.image, image);
     row.flip = flip.mean();
     row.blockSse = blockSquaredErrors(ref.image, image, 0, 0, image.width, image.height);
-    const std::vector<float> weights = relativeErrorWeights(ref.image);
+    const std::vector<float> weights = relativeErrorWeights(ref.image, ref.variance);
     row.blockRse = blockRelativeSquaredErrors(ref.image, image, weights, 0, 0, image.width, image.height);
     row.rseFloor = relativeNoiseFloor(ref.variance, weights, 0, 0, image.width, image.height);
     row.blockFlip = blockSums(flip.flip, flip.width, 0, 0, image.width, image.height);

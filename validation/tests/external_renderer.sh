@@ -20,6 +20,9 @@
 #     --references-only with a failing renderer says so (exit 3).
 #  9. A PFM header claiming 60000x60000 is refused by its size; a failing renderer's 300 MB log is read from its
 #     end: peak memory stays under 200 MB.
+# 10. The report speaks of an external renderer (no triangle count, times with start-up); a renderer that maps
+#     every seed to one value (its reference's halves bitwise equal) or the cells' seeds to one value (their images
+#     equal): an error naming the seeds, exit status 3.
 # usage: external_renderer.sh STIPPLE_VALIDATE ANALYTIC_HOST MATRIX_DIR WORKDIR
 set -u
 bin=$1 host=$2 dir=$3 work=$4
@@ -38,6 +41,29 @@ rows=$(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(len(r[
 [ "$rows" = "36 36 external: analytic_host" ] || fail "results.json rows / cpu-timed rows / integrator: $rows (expected 36 36 external: analytic_host)"
 run "$work/again.log" "$bin" "$dir/external-renderer.yaml" -o "$work/again" --cache "$work/cache" --renderer "$host" --renderer-command "$dir/analytic-host.command"
 grep -qE "cached:" "$work/again.log" || fail "the second run did not read the reference from the cache"
+! grep -q " triangles" "$work/good/index.html" || fail "the report counts triangles for an external renderer"
+grep -q "start-up and scene load included" "$work/good/index.html" || fail "the report's times assume stipple-render"
+
+# 10. Seeds that collapse: a wrapper that keeps no seed, then one that maps the cells' seeds (1..4) to 1.
+for kind in none cells; do
+  wrapper="$work/seed-$kind.sh"
+  {
+    echo '#!/usr/bin/env bash'
+    echo 'args=(); while [ $# -gt 0 ]; do'
+    if [ $kind = none ]; then echo '  if [ "$1" = --seed ]; then args+=(--seed 7); shift 2; continue; fi'
+    else echo '  if [ "$1" = --seed ] && [ "$2" -lt 1000 ]; then args+=(--seed 1); shift 2; continue; fi'; fi
+    echo '  args+=("$1"); shift; done'
+    echo "exec \"$host\" \"\${args[@]}\""
+  } > "$wrapper"
+  chmod +x "$wrapper"
+  run "$work/seed-$kind.log" "$bin" "$dir/external-renderer.yaml" -o "$work/seed-$kind" --cache "$work/cache-$kind" \
+    --renderer "$wrapper" --renderer-command "$dir/analytic-host.command"
+  [ "$(tail -1 "$work/seed-$kind.log")" = "exit 3" ] || fail "seeds mapped to one value ($kind): not exit 3"
+done
+grep -q "the reference's two halves (seeds 99991 and [0-9]*, 512 spp) are bitwise equal" "$work/seed-none.log" ||
+  fail "equal reference halves not named: $(grep -m1 stipple-validate "$work/seed-none.log")"
+grep -q "lights, independent, 4 spp: bitwise-equal images from seeds 1, 2, 3, 4" "$work/seed-cells.log" ||
+  fail "equal cell images not named: $(grep -m1 bitwise "$work/seed-cells.log")"
 
 # 2. No permission: nothing runs.
 run "$work/denied.log" "$bin" "$dir/external-renderer.yaml" -o "$work/denied" --cache "$work/cache-denied"

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -51,7 +52,18 @@ const ShimLibrary& ShimLibrary::get(const std::string& explicitPath) {
     if (!explicitPath.empty()) {
         candidates.push_back({explicitPath, "--shim"});
     } else {
-        if (const char* env = std::getenv("STIPPLE_SHIM"); env && *env) candidates.push_back({env, "STIPPLE_SHIM"});
+        // One variable across front ends (the Python package reads it too); STIPPLE_SHIM is its older alias.
+        for (const char* variable : {"STIPPLE_LIBRARY", "STIPPLE_SHIM"}) {
+            const char* env = std::getenv(variable);
+            if (!env || !*env) continue;
+            std::string path = env;
+            std::error_code ec;
+            if (std::filesystem::is_directory(path, ec)) // a folder holding the library, or its lib/
+                path += std::filesystem::exists(path + "/libstipple.so.1", ec) ? "/libstipple.so.1"
+                                                                                 : "/lib/libstipple.so.1";
+            candidates.push_back({path, variable});
+            break;
+        }
         std::string dir = exeDirectory();
         if (!dir.empty()) {
             candidates.push_back({dir + "/../lib/libstipple.so.1", "<exe dir>/../lib"});
@@ -67,7 +79,7 @@ const ShimLibrary& ShimLibrary::get(const std::string& explicitPath) {
             const char* e = dlerror();
             tried += "\n  " + path + " (" + origin + "): " + (e ? e : "dlopen failed");
             // An explicit choice that fails is an error, not a reason to pick some other library.
-            if (!explicitPath.empty() || origin == "STIPPLE_SHIM") break;
+            if (!explicitPath.empty() || origin == "STIPPLE_LIBRARY" || origin == "STIPPLE_SHIM") break;
             continue;
         }
         auto getApi = reinterpret_cast<stipple_get_api_fn>(dlsym(handle, "stipple_get_api"));
@@ -99,7 +111,7 @@ const ShimLibrary& ShimLibrary::get(const std::string& explicitPath) {
         return ref;
     }
     throw ShimError("cannot load libstipple (the sample-stream library); tried:" + tried +
-                    "\n  (set --shim PATH or STIPPLE_SHIM to the library)");
+                    "\n  (set --shim PATH or STIPPLE_LIBRARY to the library or its folder)");
 }
 
 std::string ShimLibrary::version() const {

@@ -20,7 +20,7 @@ public:
 
 class ShimLibrary {
 public:
-    // Search order: explicitPath (--shim), $STIPPLE_SHIM, <exe dir>/../lib/libstipple.so.1,
+    // Search order: explicitPath (--shim), $STIPPLE_LIBRARY (a file or folder; $STIPPLE_SHIM is its older alias), <exe dir>/../lib/libstipple.so.1,
     // <exe dir>/libstipple.so.1, then the dynamic linker's own search for "libstipple.so.1".
     // Throws ShimError listing every place tried when none loads or the ABI does not match (major 1, minor >= 1).
     static const ShimLibrary& get(const std::string& explicitPath = "");

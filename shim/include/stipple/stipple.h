@@ -166,8 +166,8 @@ STIPPLE_API const char* stipple_last_error_message(void);
 
 STIPPLE_API stipple_status stipple_get_version(uint32_t* major, uint32_t* minor, uint32_t* patch);
 
-/* "independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02" <-> STIPPLE_PATTERN_*. Names are
- * static strings. */
+/* "independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02", "lattice", "halton" <->
+ * STIPPLE_PATTERN_*. Names are static strings. */
 STIPPLE_API stipple_status stipple_pattern_from_name(const char* name, uint32_t* out_pattern);
 STIPPLE_API stipple_status stipple_pattern_name(uint32_t pattern, const char** out_name);
 

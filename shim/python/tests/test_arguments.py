@@ -3,14 +3,17 @@
 
 """Arguments are checked against their C types and the library's limits before any call: nothing is cut to 32
 bits, nothing huge is allocated for a refused count, non-integers are refused, and every refusal is a
-StippleError naming the argument. A failed constructor leaves nothing for __del__ to trip over, and a library
-that cannot be found is a StippleError too, never a bare OSError.
+StippleError naming the argument and also the built-in exception a Python user catches (ValueError, TypeError,
+OSError). A failed constructor leaves nothing for __del__ to trip over; a library that cannot be found is a
+LibraryError (a StippleError and an OSError); a path given is loaded exactly, never searched for; close() waits
+for the calls other threads have in flight.
 
 Run: STIPPLE_LIBRARY=<libstipple.so.1> python3 -m unittest discover -s shim/python/tests
 """
 import os
 import subprocess
 import sys
+import tempfile
 import unittest
 
 import numpy as np
@@ -117,9 +120,10 @@ class ArgumentTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertEqual(result.stderr, "")  # an exception in __del__ is printed as "Exception ignored in ..."
 
-    def test_a_library_that_cannot_load_is_a_stipple_error(self):
+    def test_a_library_that_cannot_load_is_a_library_error(self):
         e = self.refused(None, ["no-such-folder", "STIPPLE_LIBRARY"], stipple.Library, "no-such-folder/libx.so")
-        self.assertNotIsInstance(e, OSError)
+        self.assertIsInstance(e, stipple.LibraryError)
+        self.assertIsInstance(e, OSError)
         env = dict(os.environ, STIPPLE_LIBRARY=os.devnull)
         result = subprocess.run([sys.executable, "-c", "import stipple\ntry:\n    stipple.Library()\n"
                                  "except stipple.StippleError as e:\n    print(e)\n"], env=env,
@@ -127,6 +131,76 @@ class ArgumentTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("$STIPPLE_LIBRARY", result.stdout)
 
+    def test_errors_are_the_builtin_exceptions_python_users_catch(self):
+        with self.assertRaises(ValueError):
+            self.s.stream(0, 0, TWO_32, 0, 2)  # out of range
+        with self.assertRaises(ValueError):
+            self.lib.sampler("no-such-pattern", 4)  # refused by the library
+        with self.assertRaises(TypeError):
+            self.s.stream("0", 0, 0, 0, 2)
+        with self.assertRaises(TypeError):
+            self.lib.sampler(7, 4)
+        with self.assertRaises(OSError):
+            stipple.Library("no-such-folder")
+        for status, kind in [(errors.INVALID_ARGUMENT, ValueError), (errors.OUT_OF_RANGE, ValueError),
+                             (errors.OUT_OF_MEMORY, MemoryError), (errors.ABI_VERSION, OSError),
+                             (errors.INTERNAL, RuntimeError)]:
+            e = stipple.StippleError(status, "m")
+            self.assertIsInstance(e, kind)
+            self.assertIsInstance(e, stipple.StippleError)
+            self.assertEqual((e.status, e.message), (status, "m"))
+
+    def test_a_given_path_is_loaded_exactly(self):
+        # Each of these once made the system loader search its own places (and load whatever it found there).
+        package_parent = os.path.dirname(os.path.dirname(os.path.abspath(stipple.__file__)))
+        base_env = dict(os.environ, PYTHONPATH=package_parent)
+        with tempfile.TemporaryDirectory() as empty:
+            for given in ("./" + stipple.LIBRARY_NAME, stipple.LIBRARY_NAME, "."):
+                code = f"import stipple\ntry:\n    print(stipple.Library({given!r}).path)\n" \
+                       "except OSError as e:\n    print('refused', e)\n"
+                env = dict(base_env, LD_LIBRARY_PATH=os.path.dirname(self.lib.path))
+                result = subprocess.run([sys.executable, "-c", code], cwd=empty, env=env, capture_output=True,
+                                        text=True, timeout=60)
+                self.assertEqual(result.returncode, 0, result.stderr)
+                self.assertTrue(result.stdout.startswith("refused"), (given, result.stdout))
+                self.assertIn(empty, result.stdout)
+            code = "import stipple\ntry:\n    stipple.Library()\nexcept OSError as e:\n    print('refused', e)\n"
+            result = subprocess.run([sys.executable, "-c", code], cwd=empty, capture_output=True, text=True,
+                                    timeout=60, env=dict(base_env, STIPPLE_LIBRARY="."))
+            self.assertTrue(result.stdout.startswith("refused"), result.stdout + result.stderr)
+        self.refused(errors.INVALID_ARGUMENT, ["empty"], stipple.Library, "")
+
+    def test_close_waits_for_calls_in_flight(self):
+        # Closing a sampler while another thread is inside a call once freed it under that call (a segfault, 5 of 5
+        # runs); run in a child so a crash is a failure, not the end of the suite.
+        code = ("import threading, numpy as np, stipple\n"
+                "lib = stipple.Library()\n"
+                "pixels = np.array([[x, y] for y in range(64) for x in range(64)])\n"
+                "for trial in range(20):\n"
+                "    s = lib.sampler('stratified', 256, trial)\n"
+                "    outcome = []\n"
+                "    def work():\n"
+                "        try:\n"
+                "            while True:\n"
+                "                s.pixels(pixels, dimension=0, arity=2)\n"
+                "        except stipple.ArgumentError as e:\n"
+                "            outcome.append(str(e))\n"
+                "    t = threading.Thread(target=work)\n"
+                "    t.start()\n"
+                "    s.close()\n"
+                "    t.join()\n"
+                "    assert outcome and 'closed' in outcome[0], outcome\n"
+                "print('ok')\n")
+        result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertEqual(result.stdout.strip(), "ok")
+
+    def test_blue_noise_spelt_as_the_other_front_ends_do(self):
+        plain = self.lib.sampler("stratified", 16, 3, blue_noise=True)
+        spelt = self.lib.sampler("stratified+blue-noise", 16, 3)
+        self.assertTrue(spelt.blue_noise)
+        np.testing.assert_array_equal(plain.stream_fill(5, 9, 0, 16, 0, 2), spelt.stream_fill(5, 9, 0, 16, 0, 2))
+        self.refused(errors.INVALID_ARGUMENT, ["sobol"], self.lib.sampler, "sobol+blue-noise", 16)
 
 if __name__ == "__main__":
     unittest.main()

@@ -40,7 +40,7 @@ struct RenderOptions {
     int maxDepth = -1;      // -1: the scene's
     int threads = 0;        // 0: all hardware threads
     bool progress = false;  // progress bar on stderr when it is a TTY
-    std::string shim;       // path of libstipple.so.1; empty: $STIPPLE_SHIM, then beside the executable
+    std::string shim;       // path of libstipple.so.1; empty: $STIPPLE_LIBRARY (or its alias $STIPPLE_SHIM), then beside the executable
 };
 
 struct RenderResult {

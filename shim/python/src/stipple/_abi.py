@@ -56,6 +56,11 @@ SIGNATURES = {
     "stipple_sampler_stream_fill": [sampler, u32, u32, u32, u32, u32, u32, ctypes.c_void_p, ctypes.c_size_t],
 }
 
+# Functions of later ABI minors, bound when the library has them.
+OPTIONAL_SIGNATURES = {
+    "stipple_pattern_parse": [ctypes.c_char_p, ctypes.POINTER(u32), ctypes.POINTER(u32)],  # ABI 1.2
+}
+
 
 def bind(cdll):
     """Sets argtypes/restype of every function this package calls; AttributeError names a missing one."""
@@ -65,3 +70,8 @@ def bind(cdll):
         function = getattr(cdll, name)
         function.argtypes = argtypes
         function.restype = status
+    for name, argtypes in OPTIONAL_SIGNATURES.items():
+        function = getattr(cdll, name, None)
+        if function is not None:
+            function.argtypes = argtypes
+            function.restype = status

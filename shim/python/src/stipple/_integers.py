@@ -5,7 +5,7 @@
 (2**32 + 16 as a uint32_t is 16)."""
 import operator
 
-from .errors import INVALID_ARGUMENT, OUT_OF_RANGE, StippleError
+from .errors import INVALID_ARGUMENT, OUT_OF_RANGE, ArgumentTypeError, StippleError
 
 UINT32_MAX = 2**32 - 1
 UINT64_MAX = 2**64 - 1
@@ -18,7 +18,7 @@ def integer(value, name):
             return operator.index(value)  # int and NumPy integer scalars
         except TypeError:
             pass
-    raise StippleError(INVALID_ARGUMENT, f"{name} is {value!r} ({type(value).__name__}); expected an integer")
+    raise ArgumentTypeError(INVALID_ARGUMENT, f"{name} is {value!r} ({type(value).__name__}); expected an integer")
 
 
 def in_range(value, name, low, high, what=None):

@@ -8,7 +8,7 @@ import os
 import pathlib
 
 from . import _abi
-from .errors import ABI_VERSION, OK, StippleError
+from .errors import ABI_VERSION, INVALID_ARGUMENT, OK, ArgumentError, ArgumentTypeError, StippleError
 
 LIBRARY_NAME = "libstipple.so.1"
 ENVIRONMENT_VARIABLE = "STIPPLE_LIBRARY"
@@ -22,15 +22,29 @@ LIMITS = Limits(_abi.MAX_SAMPLES_PER_PIXEL, _abi.MAX_VALUES_PER_SAMPLE, _abi.MAX
                 _abi.MAX_NAME_LENGTH, _abi.MAX_SAMPLE_INDEX_END)
 
 
-def _as_library_file(path):
-    """A file is used as given; a folder is searched for libstipple.so.1 (directly or in its lib/)."""
-    path = pathlib.Path(path)
+def _as_library_file(path, what):
+    """An absolute path, so that exactly this file is loaded (a bare or ./-relative name would make the system
+    loader search its own places): a file is used as given; a folder is searched for libstipple.so.1 (directly
+    or in its lib/)."""
+    text = os.fspath(path)
+    if isinstance(text, bytes):
+        text = os.fsdecode(text)
+    if not text:
+        raise ArgumentError(INVALID_ARGUMENT, f"{what} is an empty path; expected the library file or its folder")
+    path = pathlib.Path(os.path.abspath(text))
     if path.is_dir():
         for candidate in (path / LIBRARY_NAME, path / "lib" / LIBRARY_NAME):
             if candidate.is_file():
                 return candidate
         return path / LIBRARY_NAME
     return path
+
+
+def _bundled_candidates():
+    """The copy of the library a pip install carries (shim/python/setup.py puts the one it was built against
+    into stipple/_lib/)."""
+    bundled = pathlib.Path(__file__).resolve().parent / "_lib" / LIBRARY_NAME
+    return [bundled] if bundled.is_file() else []
 
 
 def _installed_candidates():
@@ -56,12 +70,14 @@ def _build_tree_candidates():
 
 
 def search_path():
-    """The places Library() tries, in order, as (what, path) pairs: the STIPPLE_LIBRARY environment variable,
-    the installed prefix, the source checkout's build tree, and the system loader's own search (LD_LIBRARY_PATH,
+    """The places Library() tries, in order, as (what, path) pairs: the STIPPLE_LIBRARY environment variable
+    (when set, even to an empty string, nothing else), the copy a pip install carries, the installed prefix, the source checkout's build tree, and the system loader's own search (LD_LIBRARY_PATH,
     the ldconfig cache) by name."""
     places = []
-    if os.environ.get(ENVIRONMENT_VARIABLE):
-        return [(f"${ENVIRONMENT_VARIABLE}", _as_library_file(os.environ[ENVIRONMENT_VARIABLE]))]
+    if ENVIRONMENT_VARIABLE in os.environ:
+        return [(f"${ENVIRONMENT_VARIABLE}", _as_library_file(os.environ[ENVIRONMENT_VARIABLE],
+                                                              f"${ENVIRONMENT_VARIABLE}"))]
+    places += [("bundled with the package", p) for p in _bundled_candidates()]
     places += [("installed prefix", p) for p in _installed_candidates()]
     places += [("build tree", p) for p in _build_tree_candidates()]
     places.append(("system loader", pathlib.Path(LIBRARY_NAME)))
@@ -72,10 +88,12 @@ class Library:
     """libstipple.so.1 loaded through ctypes.
 
     Library(path=None): path (str | os.PathLike | None) is the library file or a folder holding it (or its lib/).
-    Without a path the package tries, in order: $STIPPLE_LIBRARY (a file or folder; when set, nothing else), the
-    prefix it was installed into by `cmake --install`, the build tree of the source checkout it is imported from
-    (build/release/lib first), and the system loader's search for libstipple.so.1. Raises StippleError (status
-    None) naming every place tried when none loads, and StippleError(ABI_VERSION) for a library older than 1.1.
+    A given path is loaded exactly (never looked up by the system loader). Without a path the package tries, in
+    order: $STIPPLE_LIBRARY (a file or folder; when set, nothing else), the copy of the library a pip install
+    carries, the prefix it was installed into by `cmake --install`, the build tree of the source checkout it is
+    imported from (build/release/lib first), and the system loader's search for libstipple.so.1. Raises LibraryError (an
+    OSError; status None) naming every place tried when none loads, and LibraryError(ABI_VERSION) for a library
+    older than 1.1.
 
     Attributes:
         path (str): the file loaded (or the bare name, when the system loader found it).
@@ -87,7 +105,10 @@ class Library:
     def __init__(self, path=None):
         self._cdll = None
         if path is not None:
-            places = [("argument", _as_library_file(os.fspath(path)))]
+            if not isinstance(path, (str, bytes, os.PathLike)):
+                raise ArgumentTypeError(INVALID_ARGUMENT, f"path is {path!r} ({type(path).__name__}); expected a "
+                                                          "str or os.PathLike naming the library or its folder")
+            places = [("argument", _as_library_file(path, "path"))]
         else:
             places = search_path()
         failures = []
