@@ -86,10 +86,10 @@ typedef int32_t stipple_status;
 /* ---- patterns --------------------------------------------------------------------------------------- */
 #define STIPPLE_PATTERN_INDEPENDENT 0u  /* counter-based hash, no shared RNG state */
 #define STIPPLE_PATTERN_STRATIFIED 1u   /* jittered strata; any N (see README for non-square N) */
-#define STIPPLE_PATTERN_POISSON 2u      /* amortised Poisson disk sets: 1D and 2D N >= 256 one point per cell of a
-                                          * grid aligned with the domain (rho >= 0.80; 1D below N = 64: >= 0.5),
-                                          * smaller 2D N and 3D toroidal (rho >= 0.855 / 0.835); where each beats
-                                          * stratified: README */
+#define STIPPLE_PATTERN_POISSON 2u      /* amortised Poisson disk sets, toroidal, served with a random torus
+                                          * symmetry and shift: 2D/3D near-maximal dart throwing (rho >= 0.76 /
+                                          * 0.72, blue-noise spectrum without crystal peaks); 1D one point per
+                                          * cell (of a shifted grid, rho >= 0.2); shim/POINTSETS.md */
 #define STIPPLE_PATTERN_POISSON_SEED 3u /* the study's dart throwing (Algorithm 1), generated per set */
 #define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, nested uniform), padded per dimension */
 #define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points; 3D:
