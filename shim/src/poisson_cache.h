@@ -57,10 +57,10 @@ private:
 class PoissonCache {
 public:
     static constexpr size_t kByteBudget = size_t(64) << 20;
-    // Sets per family: as many as fit in 2 MiB, at least 1, at most 128 (pixels that share a set share its
+    // Sets per family: as many as fit in 2 MiB, at least 1, at most 256 (pixels that share a set share its
     // periodogram: more sets average its noise away sooner).
     static constexpr size_t kFamilyBytes = size_t(2) << 20;
-    static constexpr uint32_t kMaxSetsPerFamily = 128;
+    static constexpr uint32_t kMaxSetsPerFamily = 256;
 
     static PoissonCache& global();
     static uint32_t setCountFor(uint32_t arity, uint32_t points);
