@@ -24,14 +24,16 @@ start=$SECONDS
 # The scenes part (city generator) has nothing to fuzz here (and ci/sanitizers.sh configures the tree the same way).
 cmake --preset asan -B "$dir" -DSTIPPLE_BUILD_SCENES=OFF
 cmake --build "$dir" -j "$jobs" --target stipple stipple_api_fuzzer scene_fuzzer matrix_fuzzer render_args_fuzzer \
-    validate_args_fuzzer provenance_fuzzer
+    validate_args_fuzzer provenance_fuzzer pfm_fuzzer command_template_fuzzer
 
 # harness name, part folder, seed corpus and regressions folders (in <part>/fuzz/)
 harnesses=("stipple_api_fuzzer shim corpus regressions" "scene_fuzzer integrators corpus regressions"
            "matrix_fuzzer validation corpus regressions"
            "render_args_fuzzer integrators args-corpus args-regressions"
            "validate_args_fuzzer validation args-corpus args-regressions"
-           "provenance_fuzzer validation provenance-corpus provenance-regressions")
+           "provenance_fuzzer validation provenance-corpus provenance-regressions"
+           "pfm_fuzzer validation pfm-corpus pfm-regressions"
+           "command_template_fuzzer validation command-corpus command-regressions")
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 

@@ -203,22 +203,33 @@ RenderResult SceneImpl::render(const RenderOptions& options) const {
         ctx.splats = &splats[t];
         ctx.width = r.width;
         ctx.height = r.height;
+        // A pixel's camera rays leave one point (a small lens) through one pixel: they are traced in packets.
+        constexpr int kPacket = RenderScene::kPacketSize;
+        Ray cameraRays[kPacket];
+        TracedHit firstHits[kPacket];
+        Spectrum radiance[kPacket];
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 sampler.startPixel(uint32_t(x), uint32_t(y), samples);
-                for (uint32_t i = 0; i < r.spp; ++i) {
-                    SampleView sv(samples, i);
-                    Point2 u = sv.get2D(dimPixel);
-                    Point2 lens = dimLens >= 0 ? sv.get2D(dimLens) : Point2{0.5f, 0.5f};
-                    Ray ray = camera.generateRay({float(x) + u.x, float(y) + u.y}, lens);
-                    Spectrum L = integrator->Li(ray, sv, ctx);
-                    if (!film.addSample(x, y, L)) ++nonFinite[t];
+                for (uint32_t i0 = 0; i0 < r.spp; i0 += kPacket) {
+                    const int n = int(std::min<uint32_t>(kPacket, r.spp - i0));
+                    for (int k = 0; k < n; ++k) {
+                        SampleView sv(samples, i0 + uint32_t(k));
+                        Point2 u = sv.get2D(dimPixel);
+                        Point2 lens = dimLens >= 0 ? sv.get2D(dimLens) : Point2{0.5f, 0.5f};
+                        cameraRays[k] = camera.generateRay({float(x) + u.x, float(y) + u.y}, lens);
+                    }
+                    scene_.intersectPacket(cameraRays, n, firstHits);
+                    ctx.rays += uint64_t(n);
+                    integrator->LiPacket(cameraRays, firstHits, samples, i0, n, ctx, radiance);
+                    for (int k = 0; k < n; ++k)
+                        if (!film.addSample(x, y, radiance[k])) ++nonFinite[t];
                 }
             }
         }
         rays[t] = ctx.rays;
         nonFinite[t] += ctx.splats->nonFinite();
-        samplerSeconds[t] = samples.samplerSeconds;
+        samplerSeconds[t] = samples.samplerSeconds();
         cpuSeconds[t] = threadCpuSeconds() - cpuStart;
         progress.tick();
     };

@@ -47,7 +47,10 @@ struct Fixture {
                     SampleView sv(ps, i);
                     Point2 u = sv.get2D(0);
                     Point2 lens = camera.isThinLens() ? sv.get2D(1) : Point2{0.5f, 0.5f};
-                    gen.cameraSubpath(camera.generateRay({float(x) + u.x, float(y) + u.y}, lens), sv, tile, cam);
+                    const Ray ray = camera.generateRay({float(x) + u.x, float(y) + u.y}, lens);
+                    TracedHit first; // the camera ray's hit, as the render loop passes it
+                    first.found = scene.intersect(ray, first.hit);
+                    gen.cameraSubpath(ray, first, sv, tile, cam);
                     gen.lightSubpath(sv, tile, light);
                     f(cam, light);
                 }

@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
     spec << "pattern,f_over_sqrt_n,power,anisotropy_db,sets\n";
     for (const char* pattern : {"independent", "stratified", "poisson-seed", "poisson"}) {
         std::string p = pattern;
-        PowerSpectrum2D spectrum(K);
+        PowerSpectrum spectrum(2, K);
         LayoutSampler independent(STIPPLE_PATTERN_INDEPENDENT, 2, sn, 11), stratified(STIPPLE_PATTERN_STRATIFIED, 2, sn, 11);
         std::vector<float> buffer(2 * sn);
         for (int s = 0; s < opt.spectrumSets; ++s) {
@@ -326,8 +326,8 @@ int main(int argc, char** argv) {
                                            0, buffer.data(), buffer.size());
             spectrum.add(buffer.data(), sn);
         }
-        for (const auto& ring : spectrum.rings())
-            spec << p << "," << ring.radius / std::sqrt(double(sn)) << "," << ring.mean << "," << ring.anisotropy << ","
+        for (const auto& ring : spectrum.annuli())
+            spec << p << "," << double(ring.radius) / std::sqrt(double(sn)) << "," << ring.mean << "," << ring.anisotropy << ","
                  << opt.spectrumSets << "\n";
         std::cerr << "spectrum " << p << "\n";
     }

@@ -3,7 +3,10 @@
 // pattern_halton.cpp — a scrambled Halton sequence: bases 2, 3 and 5 for the axes of one set.
 //
 // Point j of the sequence is (x_2(j), x_3(j), x_5(j)) up to the set's arity: x_2 is the base-2 radical inverse of j
-// Owen-scrambled by the nested hash sobol uses (owen_scrambling.h); x_3 and x_5 are radical inverses with random
+// Owen-scrambled as sobol's coordinates are (owen_scrambling.h): the Laine-Karras hash (Vegdahl's) for every digit,
+// completed below the set's level (ceil(log2 M): the M consecutive indices of a block have an interval of their own
+// there) by deepOwenScrambleReversed, so that each point is uniform in its interval, independently (nested
+// uniform); x_3 and x_5 are radical inverses with random
 // digit permutations (pbrt-v4's default Halton randomisation): digit t of the fraction is sigma_t(digit t of j),
 // sigma_t a permutation of the base's digits drawn per set and digit position, for every position down to float
 // precision (base 3: 16 digits, base 5: 11), and the rest of the fraction a uniform jitter per point. Each digit of
@@ -22,6 +25,7 @@
 #include "permutation.h"
 
 #include <array>
+#include <bit>
 
 namespace stipple::detail {
 
@@ -99,7 +103,7 @@ using Base3 = DigitScramble<3, 16>;
 using Base5 = DigitScramble<5, 11>;
 
 struct HaltonSet {
-    uint32_t orderSeed, owenSeed;
+    uint32_t orderSeed, owenSeed, deepSeed, level;
     uint64_t jitterKey;
     uint32_t blockStart; // block * M: the block's first sequence index
     uint32_t size;       // M
@@ -107,15 +111,23 @@ struct HaltonSet {
 
 HaltonSet haltonSet(const SetKey& set, const Dimension& dim) {
     const uint64_t h = hashAt(set.key, 0);
-    return HaltonSet{static_cast<uint32_t>(h), static_cast<uint32_t>(h >> 32), hashCombine(set.key, 0x7a11u),
-                     set.block * dim.setSize, dim.setSize};
+    const uint32_t owenSeed = static_cast<uint32_t>(h >> 32);
+    return HaltonSet{static_cast<uint32_t>(h),
+                     owenSeed,
+                     mixBits32(owenSeed ^ 0x5b0b01deu),
+                     static_cast<uint32_t>(std::bit_width(dim.setSize - 1)),
+                     hashCombine(set.key, 0x7a11u),
+                     set.block * dim.setSize,
+                     dim.setSize};
 }
 
 template <uint32_t Arity>
 [[gnu::always_inline]] inline void haltonPoint(const HaltonSet& s, const Base3* b3, const Base5* b5, uint32_t p,
                                                float* out) {
     const uint32_t j = s.blockStart + permuteIndexFast(p, s.size, s.orderSeed);
-    out[0] = fixedToUnitFloat(nestedUniformScramble(reverseBits32(j), s.owenSeed));
+    // The base-2 fraction's digits reversed are j itself.
+    const uint32_t scrambled = deepOwenScrambleReversed(vegdahlPermutation(j, s.owenSeed), s.level, s.deepSeed);
+    out[0] = fixedToUnitFloat(reverseBits32(scrambled));
     if constexpr (Arity >= 2) {
         const uint64_t jitter = hashAt(s.jitterKey, j);
         out[1] = fixedToUnitFloat((*b3)(j, static_cast<uint32_t>(jitter)));

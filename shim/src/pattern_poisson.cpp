@@ -2,16 +2,13 @@
 // Copyright 2026 The stipple authors
 // pattern_poisson.cpp — serving Poisson-disk sets: "poisson" from the cache, "poisson-seed" generated fresh.
 //
-// A stored "poisson" set is a cell set (one point per cell of a grid aligned with the domain: 1D
-// pointsets::generateCellSet1D, 2D pointsets::generateCellLattice) or a toroidal set (3D, and 2D where no cell grid
-// qualifies; poisson_cache.cpp). A cell set is served shifted by a whole number of cells per axis and its offsets
-// rotated inside their cells by a common amount per axis (TorusMap::alignToCells), after reflections (and, on a grid
-// with equal sides, an axis permutation): the domain's faces stay cell faces, so a non-periodic integrand sees no seam,
-// and the cell shift uniform over the grid with the rotation uniform over the cell makes every sample uniform on
-// [0,1)^arity. A toroidal set is moved by a symmetry of the torus and a Cranley-Patterson shift (isometries: rho kept).
+// A stored "poisson" set (pointsets::generatePoisson) is toroidal: it is served moved by a random symmetry of the
+// torus (axis permutation and reflections) and a Cranley-Patterson shift, isometries of the torus, so every point is
+// uniform on [0,1)^arity and the set's minimum distance is kept (in the unit cube, where the torus' wrap is cut,
+// distances only grow). A 1D set's one point per cell becomes one point per cell of the shifted grid.
 // Order: "poisson" serves the stored order (made progressive by the cache, progressive_order.h) shuffled only
 // within each layer [2^j, 2^(j+1)) (layeredIndex). Every prefix of 2^j points is thus
-// exactly the stored prefix (high rho), other prefixes add a random part of the next layer; the shuffle keeps two
+// exactly the stored prefix, other prefixes add a random part of the next layer; the shuffle keeps two
 // dimensions that drew the same stored set and symmetry from pairing their samples point for point.
 // "poisson-seed" serves its fresh set in a hashed random order.
 #include "batch_isa.h"
@@ -64,65 +61,6 @@ struct TorusMap : PoissonKernelArgs {
             source[c] = kAxisOrders[axisOrder][c];
             // The sign bit set from the hash bit, not a branch (a coin flip per call, mispredicted half the time).
             sign[c] = std::bit_cast<float>(0x3f800000u | (static_cast<uint32_t>(symmetry >> (32 + c)) & 1u) << 31);
-        }
-    }
-
-    // 1D "poisson" (pointsets::generateCellSet1D) keeps one point in each cell [c/n, (c+1)/n) of the domain: the served
-    // point is (c + k + frac(o + tau)) / n for a stored point (c + o) / n, k a whole number of cells and tau a rotation
-    // of the offsets inside their cells, both common to the set. The domain's ends stay cell boundaries (a non-periodic
-    // integrand sees no seam); k uniform over the cells and tau over [0,1) make every point uniform on [0,1); and the
-    // rotation keeps the set's structure, since the offsets' steps from cell to cell are only changed by whole turns (a
-    // set's offset steps are all q / n modulo 1). As a torus shift by (k + tau) / n followed by rotateInsideCells: a
-    // shifted point whose offset is now below tau crossed into the next cell and goes back.
-    // 2D cell sets (pointsets::generateCellLattice) are served the same way on every axis c, with cells[c]
-    // cells: offsets frac(A c) move to frac(A c + tau), which the lattice's rho floor holds for. A reflection before
-    // (sign -1) maps cells onto cells as well. Axis c = 0 draws from the hash 1D always used (1D values unchanged).
-    void alignToCells(uint64_t key, const uint32_t* cells, uint32_t arity) {
-        bool square = true;
-        for (uint32_t c = 0; c < arity; ++c) {
-            const uint64_t h = hashAt(key, c == 0 ? 3 : 7 + c);
-            const uint64_t cell = ((h >> 32) * cells[c]) >> 32;
-            cellRotation[c] = float((h >> 11) & 0x1fffffu) * 0x1p-21f;
-            cellCount[c] = float(cells[c]);
-            cellWidth[c] = float(1.0 / cells[c]);
-            shift[c] = float((double(cell) + cellRotation[c]) / cells[c]);
-            square = square && cells[c] == cells[0];
-        }
-        // An axis permutation maps cells onto cells only when the axes have as many cells.
-        if (!square)
-            for (uint32_t c = 0; c < 3; ++c) source[c] = c;
-    }
-    // cellCount[0] 0: no cells (a toroidal set, poisson-seed).
-    float cellRotation[3] = {}, cellCount[3] = {}, cellWidth[3] = {};
-
-    // The second step of alignToCells' map, in place on served values. Branch-free (the move is a coin flip per
-    // value) and without std::floor (a libm call on the baseline ISA): y >= 0, so truncation is the floor.
-    template <uint32_t Arity>
-    void rotateInsideCells(float* values, uint32_t count) const {
-        if (cellCount[0] == 0.0f) return;
-        float n[Arity], width[Arity], rotation[Arity];
-        for (uint32_t c = 0; c < Arity; ++c) n[c] = cellCount[c], width[c] = cellWidth[c], rotation[c] = cellRotation[c];
-        uint32_t widthBits[Arity];
-        for (uint32_t c = 0; c < Arity; ++c) widthBits[c] = std::bit_cast<uint32_t>(width[c]);
-        // Masks from comparisons instead of selects: compilers emitted the selects as branches, one mispredicted
-        // coin flip per value (7 ns per value measured).
-        for (uint32_t i = 0; i < count; ++i)
-            for (uint32_t c = 0; c < Arity; ++c) {
-                float& value = values[size_t(i) * Arity + c];
-                const float y = value * n[c];
-                const float offset = y - static_cast<float>(static_cast<int32_t>(y));
-                const uint32_t crossed = 0u - static_cast<uint32_t>(offset < rotation[c]);
-                float v = value - std::bit_cast<float>(widthBits[c] & crossed);
-                const uint32_t negative = std::bit_cast<uint32_t>(v) >> 31;
-                v += std::bit_cast<float>((0u - negative) & 0x3f800000u);
-                value = std::bit_cast<float>(std::bit_cast<uint32_t>(v) & (0u - static_cast<uint32_t>(v < 1.0f)));
-            }
-    }
-    void rotateInsideCells(float* values, uint32_t arity, uint32_t count) const {
-        switch (arity) {
-        case 1: return rotateInsideCells<1>(values, count);
-        case 2: return rotateInsideCells<2>(values, count);
-        default: return rotateInsideCells<3>(values, count);
         }
     }
 
@@ -203,16 +141,10 @@ template <uint32_t Arity>
         }
 }
 
-// The stored set a key draws from its family, and that set's cells (all 0: a toroidal set).
-struct CachedSet {
-    const float* points;
-    const uint32_t* cells;
-};
-CachedSet cachedSet(uint64_t key, const Dimension& dim) {
+// The stored set a key draws from its family.
+const float* cachedSet(uint64_t key, const Dimension& dim) {
     const PoissonFamily& family = *dim.poisson;
-    const uint32_t j = poissonSetIndex(key, family.setCount());
-    const float* points = family.set(j);
-    return {points, family.cells(j)};
+    return family.set(poissonSetIndex(key, family.setCount()));
 }
 
 // A fresh set per call: allocating here is part of the cost the study paid.
@@ -258,21 +190,10 @@ void serveBatch(const TorusMap& map, const float* stored, uint32_t points, uint3
     serveLayeredBaseline<Arity>(map, stored, points, first, count, out);
 }
 
-// The map built for a known arity: only its axes are computed (the others keep their unused defaults).
-// The map of a "poisson" set: a torus symmetry and shift; for a cell set the shift by whole cells and the rotation
-// inside them (TorusMap::alignToCells).
-TorusMap poissonMap(uint64_t key, const CachedSet& set, uint32_t arity) {
-    TorusMap map(key, arity, true);
-    if (set.cells[0] != 0) map.alignToCells(key, set.cells, arity);
-    return map;
-}
-
 template <BatchIsa Isa, uint32_t Arity>
 void fillPoissonOf(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    const CachedSet set = cachedSet(key, dim);
-    const TorusMap map = poissonMap(key, set, Arity);
-    serveBatch<Isa, Arity>(map, set.points, dim.setSize, first, count, out);
-    map.rotateInsideCells<Arity>(out, count);
+    const TorusMap map(key, Arity, true);
+    serveBatch<Isa, Arity>(map, cachedSet(key, dim), dim.setSize, first, count, out);
 }
 
 template <BatchIsa Isa>
@@ -285,10 +206,8 @@ void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t co
 }
 
 void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out) {
-    const CachedSet set = cachedSet(key, dim);
-    const TorusMap map = poissonMap(key, set, dim.arity);
-    map.apply(set.points + size_t(layeredIndex(p, dim.setSize, map.orderSeed)) * dim.arity, dim.arity, out);
-    map.rotateInsideCells(out, dim.arity, 1);
+    const TorusMap map(key, dim.arity, true);
+    map.apply(cachedSet(key, dim) + size_t(layeredIndex(p, dim.setSize, map.orderSeed)) * dim.arity, dim.arity, out);
 }
 
 void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out) {

@@ -26,23 +26,8 @@ const float* PoissonFamily::generate(uint32_t j) const {
     Slot& slot = slots_[j];
     std::lock_guard<std::mutex> lock(slot.mutex);
     if (const float* data = slot.ready.load(std::memory_order_relaxed)) return data;
-    // 1D sets are cell sets of their own kind (pointsets::generateCellSet1D: below 64 points the family's sets mix
-    // steps, so set j is asked for by its index). 2D takes the domain-aligned cell lattice, or the toroidal set where
-    // no grid of n cells qualifies (fewer than 16 cells a side, or the rho floor missed).
-    // 3D stays toroidal: its lattice (16^3 cells at N = 4096, the only battery size with 16 a side) measured 2.6x
-    // the toroidal set's MSE on the Genz kink and up to 9x stratified's.
-    const uint64_t seed = setSeed(arity_, points_, j);
-    uint32_t cells[3] = {0, 0, 0};
-    std::vector<float> points;
-    if (arity_ == 1) {
-        points = pointsets::generateCellSet1D(points_, j, seed);
-        cells[0] = points_;
-    } else if (arity_ == 2) {
-        pointsets::CellLattice lattice = pointsets::generateCellLattice(int(arity_), points_, seed);
-        points = std::move(lattice.points);
-        std::copy(lattice.cells, lattice.cells + 3, cells);
-    }
-    if (points.empty()) points = pointsets::generatePoisson(int(arity_), points_, seed);
+    // 1D: cell sets (pointsets::generateCellSet1D); 2D, 3D: toroidal near-maximal Poisson-disk sets.
+    std::vector<float> points = pointsets::generatePoisson(int(arity_), points_, setSeed(arity_, points_, j));
     if (points.size() != size_t(points_) * arity_)
         throw Error(STIPPLE_ERROR_INTERNAL, "poisson generator returned " + std::to_string(points.size()) +
                                                 " floats; expected " + std::to_string(size_t(points_) * arity_));
@@ -52,7 +37,6 @@ const float* PoissonFamily::generate(uint32_t j) const {
                         "poisson generator returned a value outside [0,1): " + std::to_string(v));
     orderProgressively(points, arity_); // served in stored order: prefixes stay well spread
     slot.points = std::move(points);
-    std::copy(cells, cells + 3, slot.cells);
     slot.ready.store(slot.points.data(), std::memory_order_release);
     return slot.points.data();
 }

@@ -3,9 +3,7 @@
 // poisson_cache.h — amortised Poisson-disk sets: a bounded, thread-safe cache of toroidal sets per (arity, M).
 //
 // A family holds setCount sets of M points for one arity. Set j is generated lazily, on first use, by
-// pointsets::generateCellSet1D (1D, set j of its family) or pointsets::generateCellLattice (2D;
-// pointsets::generatePoisson in 3D and where no cell grid reaches its rho floor) with a seed derived from (arity, M,
-// j) only: the content of the cache is a pure
+// pointsets::generatePoisson with a seed derived from (arity, M, j) only: the content of the cache is a pure
 // function of its key, so results never depend on which thread generated a set first.
 //
 // Bound: the families held by the cache total at most kByteBudget (64 MiB) of point storage, counted at full
@@ -40,8 +38,6 @@ public:
         if (const float* data = slots_[j].ready.load(std::memory_order_acquire)) return data;
         return generate(j);
     }
-    // Set j's cells per axis (all 0: a toroidal set, served with a torus shift); valid once set(j) returned.
-    const uint32_t* cells(uint32_t j) const { return slots_[j].cells; }
     bool generated(uint32_t j) const { return slots_[j].ready.load(std::memory_order_acquire) != nullptr; }
 
     // The seed set j is generated from: a function of (arity, M, j) only.
@@ -53,7 +49,6 @@ private:
         std::mutex mutex;
         std::atomic<const float*> ready{nullptr};
         std::vector<float> points;
-        uint32_t cells[3] = {0, 0, 0};
     };
     uint32_t arity_, points_, setCount_;
     std::unique_ptr<Slot[]> slots_;
@@ -62,9 +57,10 @@ private:
 class PoissonCache {
 public:
     static constexpr size_t kByteBudget = size_t(64) << 20;
-    // Sets per family: as many as fit in 2 MiB, at least 1, at most 32.
+    // Sets per family: as many as fit in 2 MiB, at least 1, at most 256 (pixels that share a set share its
+    // periodogram: more sets average its noise away sooner).
     static constexpr size_t kFamilyBytes = size_t(2) << 20;
-    static constexpr uint32_t kMaxSetsPerFamily = 32;
+    static constexpr uint32_t kMaxSetsPerFamily = 256;
 
     static PoissonCache& global();
     static uint32_t setCountFor(uint32_t arity, uint32_t points);

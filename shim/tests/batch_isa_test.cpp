@@ -2,18 +2,21 @@
 // Copyright 2026 The stipple authors
 // batch_isa_test.cpp — the batch kernels compiled per ISA (batch_isa.h) give the per-point values bitwise.
 // For every variant this CPU runs (baseline, AVX2, AVX-512), forced in turn: fill_pixel equals sample at every
-// index and stream_fill equals stream, for independent, stratified, poisson and sobol, arity 1..3, N from 1 to 2^18
-// (progressive grids with and without the cell table, padded grids), k = 1 and 3, runs that start on and off
-// the kernels' 64-point chunks and 16-float vectors, end mid-vector and cross blocks. With the blue-noise flag
-// (stratified, independent): every variant's fill_pixel and stream_fill equal the baseline variant's, bitwise.
+// index and stream_fill equals stream, for every pattern the library lists (stipple_pattern_count), arity 1..3, N
+// from 1 to 2^18 within the pattern's limits (progressive grids with and without the cell table, padded grids),
+// k = 1 and 3, runs that start on and off the kernels' 64-point chunks and 16-float vectors, end mid-vector and
+// cross blocks. With the blue-noise flag (every pattern whose limits accept it): every variant's fill_pixel and
+// stream_fill equal the baseline variant's, bitwise.
 #define BOOST_TEST_MODULE batch_isa
 #include <boost/test/unit_test.hpp>
 
 #include "batch_isa.h"
+#include "sampler_fixture.h"
 
 #include <stipple/stipple.h>
 
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace {
@@ -85,26 +88,67 @@ void checkPattern(uint32_t pattern, uint32_t n, uint32_t arity, uint32_t k) {
     stipple_sampler_release(s);
 }
 
+// Every pattern the library offers, asked of the library (a pattern added to the registry is tested here without
+// a change), with its limits.
+struct PatternUnderTest {
+    uint32_t id;
+    std::string name;
+    stipple_pattern_limits limits;
+    uint32_t largestN;     // past it a set costs generation, not serving: Poisson-disk sets are generated once
+                           // per size (poisson) or per pixel and block, so per point call (poisson-seed)
+};
+
+std::vector<PatternUnderTest> everyPattern() {
+    uint32_t count = 0;
+    BOOST_REQUIRE(stipple_pattern_count(&count) == STIPPLE_OK);
+    BOOST_REQUIRE_EQUAL(count, STIPPLE_PATTERN_COUNT);
+    std::vector<PatternUnderTest> patterns;
+    for (uint32_t id = 0; id < count; ++id) {
+        PatternUnderTest p{id, {}, {}, 1u << 18};
+        const char* name = nullptr;
+        BOOST_REQUIRE(stipple_pattern_name(id, &name) == STIPPLE_OK);
+        p.name = name;
+        p.limits.struct_size = sizeof p.limits;
+        BOOST_REQUIRE(stipple_pattern_get_limits(id, &p.limits) == STIPPLE_OK);
+        if (p.name == "poisson") p.largestN = 4096;
+        if (p.name == "poisson-seed") p.largestN = 256;
+        patterns.push_back(p);
+    }
+    return patterns;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
     const stipple::detail::BatchIsa widest = stipple::detail::widestBatchIsa();
     BOOST_TEST_MESSAGE("widest batch ISA on this CPU: " << static_cast<uint32_t>(widest));
+    const std::vector<PatternUnderTest> patterns = everyPattern();
     for (uint32_t isa = 0; isa <= static_cast<uint32_t>(widest); ++isa) {
         stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa));
         BOOST_REQUIRE(stipple::detail::batchIsa() == static_cast<stipple::detail::BatchIsa>(isa));
-        for (uint32_t pattern :
-             {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_SOBOL,
-              STIPPLE_PATTERN_PMJ02})
+        for (const PatternUnderTest& p : patterns)
             for (uint32_t arity = 1; arity <= 3; ++arity)
                 for (uint32_t n : {1u, 2u, 4u, 13u, 16u, 64u, 256u, 4096u, 1u << 17, 1u << 18}) {
-                    if (pattern == STIPPLE_PATTERN_POISSON && n > 4096) continue; // generation time, not serving
-                    if (pattern == STIPPLE_PATTERN_PMJ02 && n > 1u << 16) continue; // its largest sets
-                    checkPattern(pattern, n, arity, 1);
-                    if (n <= 256) checkPattern(pattern, n, arity, 3);
+                    if (n > p.limits.max_set_size || n > p.largestN) continue;
+                    checkPattern(p.id, n, arity, 1);
+                    if (n <= 256 && 3 * n <= p.limits.max_set_size) checkPattern(p.id, n, arity, 3);
                 }
     }
     stipple::detail::forceBatchIsa(widest);
+}
+
+// The fixture's lists are the library's: every pattern, and the blue-noise flag accepted exactly where the
+// pattern's limits say so.
+BOOST_AUTO_TEST_CASE(the_test_lists_are_the_library_s) {
+    const std::vector<PatternUnderTest> patterns = everyPattern();
+    BOOST_REQUIRE_EQUAL(patterns.size(), stipple::test::kAllPatterns.size());
+    std::vector<uint32_t> accepting, refusing;
+    for (const PatternUnderTest& p : patterns)
+        (p.limits.flags & STIPPLE_SAMPLER_FLAG_BLUE_NOISE ? accepting : refusing).push_back(p.id);
+    BOOST_CHECK(accepting == std::vector<uint32_t>(std::begin(stipple::test::kBlueNoisePatterns),
+                                                   std::end(stipple::test::kBlueNoisePatterns)));
+    BOOST_CHECK(refusing == std::vector<uint32_t>(std::begin(stipple::test::kBlueNoiseRefused),
+                                                  std::end(stipple::test::kBlueNoiseRefused)));
 }
 
 BOOST_AUTO_TEST_CASE(forcing_is_clamped_to_the_cpu) {
@@ -135,7 +179,9 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_gives_the_same_blue_noise_values) {
         stipple_sampler_release(s);
         return v;
     };
-    for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED})
+    for (const PatternUnderTest& p : everyPattern()) {
+        if (!(p.limits.flags & STIPPLE_SAMPLER_FLAG_BLUE_NOISE)) continue; // the patterns that accept the flag
+        const uint32_t pattern = p.id;
         for (uint32_t arity = 1; arity <= 3; ++arity)
             for (uint32_t n : {1u, 2u, 13u, 16u, 64u, 100u, 256u, 4096u, 1u << 16})
                 for (uint32_t k : {1u, 3u}) {
@@ -150,5 +196,6 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_gives_the_same_blue_noise_values) {
                                                        << ": ISA " << isa << " differs from the baseline");
                     }
                 }
+    }
     stipple::detail::forceBatchIsa(widest);
 }

@@ -10,6 +10,8 @@
 #define BOOST_TEST_MODULE kit_cursor
 #include <boost/test/unit_test.hpp>
 
+#include <sys/resource.h>
+
 #include <cstring>
 #include <array>
 #include <random>
@@ -207,4 +209,26 @@ BOOST_AUTO_TEST_CASE(errors_come_back_through_the_status_forms) {
 #if STIPPLE_HPP_EXCEPTIONS
     BOOST_CHECK_THROW(empty.get1D(), stipple::Error);
 #endif
+}
+
+// An array shape the library refuses for its k * N (k = 1024 at N = 65536 is 2^26 values of one dimension, past
+// STIPPLE_MAX_SET_SIZE) comes back as the library's error without a window-sized buffer (it was 512 MiB).
+BOOST_AUTO_TEST_CASE(an_array_past_the_set_size_limit_sizes_nothing_by_its_shape) {
+    const uint32_t n = 65536, k = STIPPLE_MAX_VALUES_PER_SAMPLE;
+    const Sampler s = makeSampler("independent", n, 7);
+    PixelSampleCursor cursor(s);
+    cursor.setBatchSamples(n);
+    cursor.start(Pixel{0, 0}, 0);
+    struct rusage before {}, after {};
+    getrusage(RUSAGE_SELF, &before);
+    const float* v = nullptr;
+    const stipple::Status st = cursor.nextArray(2, k, v);
+    getrusage(RUSAGE_SELF, &after);
+    BOOST_CHECK(!st.ok());
+    BOOST_TEST_MESSAGE(st.message());
+    BOOST_CHECK(v != nullptr && v[0] == 0.0f);
+    const long grownKiB = after.ru_maxrss - before.ru_maxrss; // a 2^26-pair window would be 512 MiB
+    BOOST_CHECK_MESSAGE(grownKiB < 64 * 1024, "peak memory grew by " << grownKiB << " KiB");
+    float u = 1.0f;
+    BOOST_CHECK(cursor.next1D(u).ok()); // the cursor still serves
 }

@@ -6,8 +6,8 @@
 // random-access call equal bitwise to the batch call, and for stratified 1D one value per stratum.
 //
 // Cost of one pixel's set at N = 2^20 (Release, measured on the shared 2-core CI machine under load):
-// independent 0.003-0.1 s, stratified 0.2-0.3 s per arity; poisson 2D 10 s (the family's first set is built by
-// relaxation, then cached); poisson-seed 46 s (2D) and 52 s (1D) for EVERY (pixel, dimension) call, by design.
+// independent 0.003-0.1 s, stratified 0.2-0.3 s per arity; poisson 2D a few s (the family's first set is built by
+// dart throwing, then cached); poisson-seed 46 s (2D) and 52 s (1D) for EVERY (pixel, dimension) call, by design.
 // So independent and stratified are served at 2^20 for every arity, poisson at 2^20 in 2D only (skipped under
 // sanitizers, ~3x slower), poisson-seed at 2^20 only created (layout validated, generation lazy) and asked for
 // the past-the-layout stream; both Poisson patterns are served for every arity at N = 4099 (a prime > 4096).

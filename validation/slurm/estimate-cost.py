@@ -58,6 +58,12 @@ except (OSError, UnicodeDecodeError, yaml.YAMLError) as e:
     fail(2, f"{a.matrix}: cannot read the matrix: {e}")
 if not isinstance(m, dict) or not all(k in m for k in ("scenes", "patterns", "spp", "seeds")):
     fail(2, f"{a.matrix}: not a matrix (a map with scenes, patterns, spp and seeds)")
+# The sample renders through stipple-render at a reduced size; an external renderer's cost is its own.
+external = [str(e.get("name", e.get("file"))) if isinstance(e, dict) else str(e)
+            for e in m["scenes"] if m.get("renderer") or (isinstance(e, dict) and e.get("renderer"))]
+if external:
+    fail(2, f"{a.matrix}: scenes {', '.join(external)} use an external renderer; estimate-cost samples "
+            f"stipple-render only: time a few of the host renderer's cells instead")
 if not (os.path.isfile(a.bin) and os.access(a.bin, os.X_OK)):
     fail(2, f"--bin {a.bin}: not an executable file")
 work = pathlib.Path(a.work).resolve()

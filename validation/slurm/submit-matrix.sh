@@ -17,6 +17,9 @@
 #   --bin PATH        stipple-validate (default: build/release/bin/stipple-validate of this repository)
 #   --partition P     partition (default: the cluster's default)
 #   --exclusive       one task per node: timing claims need quiet machines
+#   --renderer PROGRAM, --renderer-command FILE, --allow-renderer, --renderer-timeout S
+#                     passed to every task for a matrix with external renderers (see validation/README.md); the
+#                     program and the file are made absolute (a bare program name is looked up on the task's PATH)
 #   -- OPTIONS        more sbatch options for both jobs; not those this script sets (--array, --dependency,
 #                     --output, --chdir, --export, --job-name, --cpus-per-task, --mem, --time, --parsable)
 # Output: OUTDIR/shards/<i> (shard report folders), OUTDIR/logs/ (task logs), OUTDIR/report (the merged report,
@@ -33,6 +36,7 @@ matrix=$1 out=$2
 shift 2
 [ -n "$matrix" ] && [ -n "$out" ] || bad "MATRIX and OUTDIR must not be empty"
 tasks="" threads=2 mem=2000 limit=04:00:00 cache="" indices="" partition="" exclusive=0 parsable=0
+renderer="" renderer_command="" allow_renderer=0 renderer_timeout=""
 bin=$here/../../build/release/bin/stipple-validate
 extra=()
 while [ $# -gt 0 ]; do
@@ -44,6 +48,14 @@ while [ $# -gt 0 ]; do
                 --cache) cache=$2 ;; --indices) indices=$2 ;; --bin) bin=$2 ;; --partition) partition=$2 ;;
             esac
             shift 2 ;;
+        --renderer | --renderer-command | --renderer-timeout)
+            [ $# -ge 2 ] && [ -n "$2" ] || bad "$1 needs a value"
+            case "$1" in
+                --renderer) renderer=$2 ;; --renderer-command) renderer_command=$2 ;;
+                --renderer-timeout) renderer_timeout=$2 ;;
+            esac
+            shift 2 ;;
+        --allow-renderer) allow_renderer=1; shift ;;
         --exclusive) exclusive=1; shift ;;
         --parsable) parsable=1; shift ;;
         --) shift; extra=("$@"); break ;;
@@ -78,6 +90,17 @@ for x in "${extra[@]}"; do
     esac
 done
 [ -f "$matrix" ] || bad "no matrix file '$matrix'"
+# The renderer options are checked by stipple-validate itself; here only made absolute (tasks run elsewhere).
+if [ -n "$renderer_command" ]; then
+    [ -f "$renderer_command" ] || bad "--renderer-command: no file '$renderer_command'"
+    renderer_command=$(realpath -- "$renderer_command")
+fi
+if [ -n "$renderer" ] && [[ "$renderer" == */* ]]; then
+    [ -f "$renderer" ] || bad "--renderer: no file '$renderer'"
+    renderer=$(realpath -- "$renderer")
+fi
+[ -z "$renderer_timeout" ] || [[ "$renderer_timeout" =~ ^[0-9]+(\.[0-9]+)?$ ]] \
+    || bad "--renderer-timeout: expected seconds, got '$renderer_timeout'"
 [ -x "$bin" ] && [ -f "$bin" ] || bad "stipple-validate not found at '$bin' (build it, or pass --bin)"
 
 matrix=$(realpath -- "$matrix")
@@ -90,7 +113,8 @@ cache=$(realpath -- "$cache")
 
 # What the job scripts read (sbatch --export=ALL hands the submitting environment to the jobs).
 export STIPPLE_BIN=$bin STIPPLE_MATRIX=$matrix STIPPLE_OUT=$out STIPPLE_CACHE=$cache STIPPLE_TASKS=$tasks \
-    STIPPLE_THREADS=$threads
+    STIPPLE_THREADS=$threads STIPPLE_RENDERER=$renderer STIPPLE_RENDERER_COMMAND=$renderer_command \
+    STIPPLE_ALLOW_RENDERER=$allow_renderer STIPPLE_RENDERER_TIMEOUT=$renderer_timeout
 common=(--parsable --export=ALL --chdir="$out")
 [ -n "$partition" ] && common+=(--partition="$partition")
 
@@ -102,8 +126,13 @@ array=$(sbatch "${common[@]}" "${task_args[@]}" "${extra[@]}" <<'JOB'
 #!/usr/bin/env bash
 set -eu
 i=$SLURM_ARRAY_TASK_ID
+renderer=()
+[ -z "${STIPPLE_RENDERER_COMMAND:-}" ] || renderer+=(--renderer-command "$STIPPLE_RENDERER_COMMAND")
+[ -z "${STIPPLE_RENDERER:-}" ] || renderer+=(--renderer "$STIPPLE_RENDERER")
+[ "${STIPPLE_ALLOW_RENDERER:-0}" != 1 ] || renderer+=(--allow-renderer)
+[ -z "${STIPPLE_RENDERER_TIMEOUT:-}" ] || renderer+=(--renderer-timeout "$STIPPLE_RENDERER_TIMEOUT")
 exec "$STIPPLE_BIN" "$STIPPLE_MATRIX" --shard "$i/$STIPPLE_TASKS" --threads "${SLURM_CPUS_PER_TASK:-$STIPPLE_THREADS}" \
-    --cache "$STIPPLE_CACHE" -o "$STIPPLE_OUT/shards/$i"
+    --cache "$STIPPLE_CACHE" -o "$STIPPLE_OUT/shards/$i" "${renderer[@]}"
 JOB
 )
 array=${array%%;*}

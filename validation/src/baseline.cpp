@@ -19,6 +19,15 @@ BaselineComparison compareToBaseline(const std::vector<CellAggregate>& now, cons
             continue;
         }
         ++out.compared;
+        // A cell without a finite error (now or in the baseline) is never within tolerance.
+        if (c->unmeasuredSeeds || b.unmeasuredSeeds || !std::isfinite(c->rms.mean) || !std::isfinite(b.rms.mean)) {
+            out.failed = true;
+            std::snprintf(buf, sizeof buf, "FAIL rms  %s %s @ %u spp: no finite error %s", b.scene.c_str(),
+                          b.pattern.c_str(), b.spp,
+                          c->unmeasuredSeeds || !std::isfinite(c->rms.mean) ? "now" : "in the baseline");
+            out.lines.push_back(buf);
+            continue;
+        }
         double hNow = std::isfinite(c->rms.halfWidth) ? c->rms.halfWidth : 0;
         double hBase = std::isfinite(b.rms.halfWidth) ? b.rms.halfWidth : 0;
         double tolerance = std::sqrt(hNow * hNow + hBase * hBase);

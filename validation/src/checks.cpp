@@ -77,6 +77,13 @@ void ordering(const Check& k, const Matrix& m, const std::vector<CellAggregate>&
                     worsen(cellStatus, CheckStatus::Fail);
                     continue;
                 }
+                if (a->unmeasuredSeeds || b->unmeasuredSeeds) { // no verdict from a cell without a finite error
+                    line += fmt("[cell %s/%s: %zu seeds without a finite error] ", scene.c_str(),
+                                (a->unmeasuredSeeds ? a : b)->pattern.c_str(),
+                                (a->unmeasuredSeeds ? a : b)->unmeasuredSeeds);
+                    worsen(cellStatus, CheckStatus::Fail);
+                    continue;
+                }
                 std::string why;
                 const int order = compareRms(*a, *b, why);
                 const char* relation = order < 0 ? "<" : order > 0 ? "> (reversed)" : "~ (not separated)";
@@ -104,7 +111,8 @@ void slope(const Check& k, const Matrix& m, const std::vector<SlopeFit>& slopes,
             if (s.scene == scene && s.pattern == k.pattern) f = &s;
         if (!f || !std::isfinite(f->fit.slope)) {
             o.status = CheckStatus::Fail;
-            o.figures.push_back(fmt("%s %s: no fit (too few points with RMS > 0)", scene.c_str(), k.pattern.c_str()));
+            o.figures.push_back(fmt("%s %s: no fit (too few points with RMS > 0, or a point without a finite error)",
+                                    scene.c_str(), k.pattern.c_str()));
             continue;
         }
         bool ok = std::fabs(f->fit.slope - k.expected) <= k.tolerance;
@@ -182,6 +190,7 @@ const Fields<CheckOutcome>& outcomeFields() {
         text("where", [](const O& o) { return o.check.where; }),
         text("status", [](const O& o) { return std::string(checkStatusName(o.status)); }),
         field("fails_run", &O::failsRun),
+        text("study", [](const O& o) { return o.check.study; }),
         field("claim", &O::claim),
         {"figures",
          [](const O& o) { return Json(o.figures); },

@@ -13,7 +13,7 @@ namespace stipple::validation {
 const char* const kValidateUsage =
     "usage: stipple-validate MATRIX.yaml [-o DIR] [--threads T] [--cache DIR] [--baseline results.json]\n"
     "                        [--shard i/n] [--references-only] [--quiet] [--merge DIR1 DIR2 ...]\n"
-    "                        [--allow-renderer | --renderer PROGRAM]\n"
+    "                        [--renderer-command FILE (--allow-renderer | --renderer PROGRAM)]\n"
     "                        [--study FOLDER]\n"
     "       stipple-validate --serve-study FOLDER [--port N]\n"
     "       stipple-validate --analyse-study FOLDER [VOTES.json | VOTES-FOLDER ...]\n"
@@ -32,10 +32,14 @@ const char* const kValidateUsage =
     "                     left to --merge (default: 1/1, the whole matrix)\n"
     "  --references-only  make the references (of this shard's scenes) in the cache and stop (default: off)\n"
     "  --merge DIR...     combine shard report folders into the report a single run makes (default: off)\n"
-    "  --allow-renderer   run the external renderer commands the matrix names (default: off; a matrix alone runs\n"
-    "                     no program)\n"
-    "  --renderer PROGRAM run PROGRAM as the external renderer, in place of the program of the matrix's commands\n"
-    "                     (default: none)\n"
+    "  --renderer-command FILE  the command templates a matrix may run (one argument per line, a blank line\n"
+    "                     between templates): a matrix's external renderer command runs only when byte-equal to one\n"
+    "  --allow-renderer   run the matrix's external renderer commands that are templates of FILE (default: off; a\n"
+    "                     matrix alone runs no program)\n"
+    "  --renderer PROGRAM run PROGRAM in place of the first argument of the matrix's commands whose other arguments\n"
+    "                     are a template of FILE (default: none)\n"
+    "  --renderer-timeout S  seconds one image of an external renderer may take; past it the program and its\n"
+    "                     children are killed and the cell named (default: the matrix's renderer timeout, else none)\n"
     "  --study FOLDER     a perceptual experiment folder (made by a run of a matrix with 'perceptual'): its votes/\n"
     "                     fill the report's perceptual block and Figure 8 (default: none)\n"
     "  --serve-study FOLDER  serve the experiment on 127.0.0.1 and store each observer's votes in FOLDER/votes\n"
@@ -127,6 +131,15 @@ Args parseArgs(const std::vector<std::string>& argv) {
         } else if (s == "--analyse-study") {
             a.analyseStudy = value();
             while (i + 1 < argc && !argv[i + 1].empty() && argv[i + 1][0] != '-') a.extraVotes.push_back(argv[++i]);
+        } else if (s == "--renderer-timeout") {
+            const std::string v = value();
+            char* end = nullptr;
+            const double t = std::strtod(v.c_str(), &end);
+            if (*end || !(t > 0 && t <= 1e6))
+                throw UsageError("--renderer-timeout: expected seconds in (0, 1000000], got '" + v + "'");
+            a.rendererTimeout = t;
+        } else if (s == "--renderer-command") {
+            a.rendererCommand = value();
         } else if (s == "--merge") {
             if (attached) a.merge.push_back(value());
             while (i + 1 < argc && (argv[i + 1].empty() || argv[i + 1][0] != '-')) {
@@ -149,6 +162,13 @@ Args parseArgs(const std::vector<std::string>& argv) {
         return a;
     }
     if (a.matrix.empty()) throw UsageError("no matrix file given");
+    if ((a.allowRenderer || !a.renderer.empty()) != !a.rendererCommand.empty())
+        throw UsageError(a.rendererCommand.empty()
+                             ? "--allow-renderer and --renderer need --renderer-command FILE: the templates a matrix's "
+                               "command must equal (a matrix cannot add arguments of its own)"
+                             : "--renderer-command needs --allow-renderer or --renderer PROGRAM");
+    if (a.allowRenderer && !a.renderer.empty())
+        throw UsageError("--allow-renderer runs the matrix's programs, --renderer PROGRAM replaces them: give one");
     if (!a.merge.empty() && (a.shardCount > 1 || a.referencesOnly))
         throw UsageError("--merge combines finished shards; it cannot be used with --shard or --references-only");
     return a;

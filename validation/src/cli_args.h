@@ -25,7 +25,8 @@ struct Args {
     std::vector<std::string> merge;
     bool help = false;    // -h / --help: print kValidateUsage and stop
     bool version = false; // --version: print the version line and stop
-    // External renderers (a matrix's 'renderer'): run the matrix's own command, or this program in its place.
+    // External renderers (a matrix's 'renderer'): run the matrix's own command, or this program in its place,
+    // when the command is one of the templates of rendererCommand (external_renderer.h, RendererPermission).
     bool allowRenderer = false;
     std::string renderer;
     // The perceptual experiment (validation/src/perceptual/): its votes in the report, serving it, analysing it.
@@ -34,6 +35,8 @@ struct Args {
     int port = 8765;          // --port for --serve-study (0: any free port)
     std::string analyseStudy; // --analyse-study FOLDER [VOTES...]
     std::vector<std::string> extraVotes;
+    std::string rendererCommand;
+    double rendererTimeout = 0; // --renderer-timeout SECONDS: per image; 0: the matrix's
 };
 
 // argv without the program name. Throws UsageError.

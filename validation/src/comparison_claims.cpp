@@ -141,7 +141,8 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                   "excludes 1: BETTER/WORSE)%s",
                   k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp, pairs.c_str(),
                   k.flipMetric ? "mean FLIP"
-                               : fmt("relative squared error Σ_rgb e² / (reference + image mean)², capped at 3·%g²",
+                               : fmt("relative squared error Σ_rgb e² / (reference + image mean)², capped at 3·%g², "
+                                     "noisy blocks divided by their noise over the median's",
                                      kRelativeErrorCap)
                                      .c_str(),
                   k.equalTime ? "× CPU s (equal time)" : "per sample", expectationName(k.expect), margin.lo, margin.hi,
@@ -166,16 +167,14 @@ void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRo
                     v.flip = k.flipMetric;
                     v.comparison = comparePatterns(rows, s, v.a, v.b, k.spp, ri, k.flipMetric, k.equalTime, margin);
                     v.status = statusFor(k.expect, v.comparison);
-                    // The plain MSE ratio beside: what the weights and the cap changed. In an equal-time comparison it
-                    // is still per CPU second and, uncapped, near 1 its interval's end moves with the run's timing: it
-                    // is shown without a verdict word there, since only the main figure decides.
+                    // The plain MSE ratio beside, labelled and without a verdict word: what the weights and the cap
+                    // changed. Only the main figure decides; a second word on the same line read as a second verdict.
                     std::string plainText;
                     if (!k.flipMetric) {
                         const Comparison plain =
                             comparePatterns(rows, s, v.a, v.b, k.spp, ri, false, k.equalTime, margin, false);
-                        plainText = k.equalTime ? fmt("; plain MSE × CPU s %s", ratioText(plain).c_str())
-                                                : fmt("; plain MSE %s %s", ratioText(plain).c_str(),
-                                                      verdictName(plain.verdict));
+                        plainText = fmt("; the study's plain MSE%s, not the verdict's error: %s",
+                                        k.equalTime ? " × CPU s" : "", ratioText(plain).c_str());
                     }
                     if (v.status == CheckStatus::Fail || (v.status == CheckStatus::NotSeparated && o.status == CheckStatus::Pass))
                         o.status = v.status;

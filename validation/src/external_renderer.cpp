@@ -3,6 +3,8 @@
 
 #include "external_renderer.h"
 #include "external_command.h"
+#include "pfm_image.h"
+#include "reference_integrity.h"
 #include "results.h"
 
 #include <fcntl.h>
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -20,9 +23,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <stipple/render/content_hash.h>
+#include <stipple/render/input_limits.h>
+#include <stipple/render/temp_files.h>
 
 extern char** environ;
 
@@ -37,18 +43,47 @@ std::string signalName(int signal) {
     return std::to_string(signal) + (name ? std::string(" (") + name + ")" : "");
 }
 
-// The last lines of a program's output, for an error message.
+// The last lines of a program's output, for an error message: only the file's last maxBytes are read (a
+// renderer's log may be gigabytes).
 std::string tail(const std::string& path, size_t maxBytes = 600) {
-    std::ifstream in(path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (text.size() > maxBytes) text = "..." + text.substr(text.size() - maxBytes);
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::streamoff size = in ? std::streamoff(in.tellg()) : 0;
+    const std::streamoff from = size > std::streamoff(maxBytes) ? size - std::streamoff(maxBytes) : 0;
+    std::string text(size_t(size - from), '\0');
+    in.seekg(from);
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+    for (char& c : text) // a NUL or an escape sequence of the program's must not cut or garble the message
+        if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) c = '?';
+    if (from > 0) text = "..." + text;
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     return text;
 }
 
-// The executable a program name resolves to (as execvp would find it), or "" if none.
-std::string resolveProgram(const std::string& program) {
-    if (program.find('/') != std::string::npos) return access(program.c_str(), X_OK) == 0 ? program : "";
+// The file a program name resolves to, as execvp would find it (the first PATH entry where it is executable),
+// or "" with `why`: the result must be one regular file that is executable and readable (its bytes are hashed into
+// the reference key), so a directory, a FIFO or an execute-only program is an error, never hashed as no bytes.
+std::string resolveProgram(const std::string& program, std::string& why) {
+    auto usable = [&](const std::string& candidate) -> int { // 1 usable, 0 not there, -1 there but unusable
+        struct stat st {};
+        if (::stat(candidate.c_str(), &st) != 0) return 0;
+        if (S_ISDIR(st.st_mode)) {
+            why = "resolves to a folder (" + candidate + ")";
+            return program.find('/') != std::string::npos ? -1 : 0; // execvp skips a folder on PATH
+        }
+        if (access(candidate.c_str(), X_OK) != 0) return 0;
+        if (!S_ISREG(st.st_mode)) {
+            why = "resolves to " + candidate + ", which is not a regular file";
+            return -1;
+        }
+        if (access(candidate.c_str(), R_OK) != 0) {
+            why = "resolves to " + candidate + ", which is executable but not readable (its bytes key the reference)";
+            return -1;
+        }
+        return 1;
+    };
+    why = "is not an executable file (nor found on PATH)";
+    if (program.find('/') != std::string::npos) return usable(program) == 1 ? program : "";
     const char* path = std::getenv("PATH");
     std::string dirs = path ? path : "/usr/bin:/bin";
     size_t start = 0;
@@ -56,7 +91,7 @@ std::string resolveProgram(const std::string& program) {
         size_t end = dirs.find(':', start);
         if (end == std::string::npos) end = dirs.size();
         const std::string candidate = (end > start ? dirs.substr(start, end - start) : ".") + "/" + program;
-        if (access(candidate.c_str(), X_OK) == 0) return candidate;
+        if (const int u = usable(candidate); u != 0) return u == 1 ? candidate : "";
         start = end + 1;
     }
     return "";
@@ -67,8 +102,12 @@ struct ChildRun {
     double wallSeconds = 0, cpuSeconds = 0;
 };
 
-// Runs argv (no shell) with stdin from /dev/null and stdout + stderr into logPath; waits for it.
-ChildRun runChild(const std::vector<std::string>& argv, const std::string& logPath, const std::string& cell) {
+// Runs the executable (resolved once, so the program run is the one hashed) with argv (no shell), stdin from
+// /dev/null, stdout + stderr into logPath, in a process group of its own that the signal cleanup kills and reaps
+// (render::registerChildGroup). Waits for it; past timeoutSeconds (> 0) kills the group and throws naming the
+// cell. Whatever the program left running in its group is killed when it ends.
+ChildRun runChild(const std::string& executable, const std::vector<std::string>& argv, const std::string& logPath,
+                  const std::string& cell, double timeoutSeconds) {
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -77,12 +116,43 @@ ChildRun runChild(const std::vector<std::string>& argv, const std::string& logPa
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0); // its own group, led by itself
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
-    const int spawned = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+    int spawned = 0;
+    {
+        render::SignalHold hold; // started and registered, or (after a signal's cleanup began) never started
+        spawned = posix_spawn(&pid, executable.c_str(), &actions, &attributes, args.data(), environ);
+        if (spawned == 0) render::registerChildGroup(pid);
+    }
     posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
     if (spawned != 0)
         throw std::runtime_error(cell + ": cannot run '" + argv[0] + "': " + std::strerror(spawned));
+    struct Unregister {
+        pid_t pid;
+        ~Unregister() { render::unregisterChildGroup(pid); }
+    } unregister{pid};
+    // Poll for its end without reaping it: while the leader is a zombie its group id cannot be reused, so the
+    // group can be killed safely once it has ended (or when it has run too long).
+    bool timedOut = false;
+    for (;;) {
+        siginfo_t info{};
+        const int w = waitid(P_PID, id_t(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+        if (w < 0 && errno == EINTR) continue;
+        if (w < 0) throw std::runtime_error(cell + ": waiting for '" + argv[0] + "' failed: " + std::strerror(errno));
+        if (info.si_pid == pid) break;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (timeoutSeconds > 0 && elapsed > timeoutSeconds) {
+            timedOut = true;
+            break;
+        }
+        usleep(elapsed < 1 ? 2000 : 20000);
+    }
+    ::kill(-pid, SIGKILL); // the program's own children, or all of it when it ran too long
     ChildRun run;
     struct rusage usage {};
     pid_t waited;
@@ -90,6 +160,11 @@ ChildRun runChild(const std::vector<std::string>& argv, const std::string& logPa
         waited = wait4(pid, &run.status, 0, &usage);
     } while (waited < 0 && errno == EINTR);
     if (waited != pid) throw std::runtime_error(cell + ": waiting for '" + argv[0] + "' failed: " + std::strerror(errno));
+    if (timedOut)
+        throw std::runtime_error(cell + ": the renderer ran longer than the per-image timeout of " +
+                                 std::to_string(timeoutSeconds).substr(0, std::to_string(timeoutSeconds).find('.') + 2) +
+                                 " s (renderer timeout in the matrix, --renderer-timeout) and was killed; its output "
+                                 "ends: " + tail(logPath));
     run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     run.cpuSeconds = double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec) +
                      double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);
@@ -112,21 +187,41 @@ struct ExternalCache {
           key((fs::path(dir) / ("external-" + hex + ".key")).string()) {}
 };
 
+// What the .key file holds after the key material: both images' pixel checksums.
+std::string checksumLines(const render::Image& image, const render::Image& variance) {
+    return "image " + pixelChecksumHex(image) + "\nvariance " + pixelChecksumHex(variance) + "\n";
+}
+
 } // namespace
+
+std::string checkRendererPermission(const MatrixScene& scene, const RendererPermission& permission) {
+    const std::vector<std::string>& command = scene.renderer.command;
+    if (!permission.granted())
+        return "the matrix runs scene " + scene.name + " with an external renderer ('" + command[0] + "', " +
+               scene.renderer.where +
+               "); a matrix alone does not run programs: pass --renderer-command FILE with --allow-renderer to run "
+               "the matrix's command or with --renderer PROGRAM to name the program";
+    const bool full = permission.program.empty(); // --allow-renderer: the program is the template's too
+    for (const auto& allowed : permission.commands)
+        if (full ? allowed == command
+                 : allowed.size() == command.size() && std::equal(allowed.begin() + 1, allowed.end(), command.begin() + 1))
+            return "";
+    std::string text;
+    for (const std::string& a : command) text += (text.empty() ? "" : " ") + a;
+    return scene.renderer.where + ": scene " + scene.name + ": the command [" + text + "] is not one the command line " +
+           "allows: a matrix's template runs only when it is byte-equal to a template of --renderer-command FILE" +
+           (full ? "" : " (from its second argument on, with --renderer)");
+}
 
 ExternalRenderer::ExternalRenderer(const MatrixScene& scene, const RendererPermission& permission, std::string workDir)
     : scene_(scene), command_(scene.renderer.command), workDir_(std::move(workDir)) {
-    if (!permission.program.empty())
-        command_[0] = permission.program;
-    else if (!permission.allowMatrixProgram)
-        throw std::runtime_error("the matrix runs scene " + scene.name + " with an external renderer ('" +
-                                 scene.renderer.command[0] + "', " + scene.renderer.where +
-                                 "); a matrix alone does not run programs: pass --allow-renderer to run the matrix's "
-                                 "command or --renderer PROGRAM to name the program");
-    program_ = resolveProgram(command_[0]);
+    if (const std::string why = checkRendererPermission(scene, permission); !why.empty()) throw std::runtime_error(why);
+    if (!permission.program.empty()) command_[0] = permission.program;
+    timeoutSeconds_ = permission.timeoutSeconds > 0 ? permission.timeoutSeconds : scene.renderer.timeoutSeconds;
+    std::string why;
+    program_ = resolveProgram(command_[0], why);
     if (program_.empty())
-        throw std::runtime_error("scene " + scene.name + ": the external renderer '" + command_[0] +
-                                 "' is not an executable file (nor found on PATH)");
+        throw std::runtime_error("scene " + scene.name + ": the external renderer '" + command_[0] + "' " + why);
 }
 
 std::vector<std::string> ExternalRenderer::expand(const render::RenderOptions& o, const std::string& output) const {
@@ -151,19 +246,21 @@ render::RenderResult ExternalRenderer::render(const render::RenderOptions& o) co
     const std::string output = stem + (scene_.renderer.format == "pfm" ? ".pfm" : ".exr"), log = stem + ".log";
     std::error_code ignored;
     fs::remove(output, ignored);
-    const ChildRun run = runChild(expand(o, output), log, cell);
+    const ChildRun run = runChild(program_, expand(o, output), log, cell, timeoutSeconds_);
     if (WIFSIGNALED(run.status))
         throw std::runtime_error(cell + ": the renderer was killed by signal " + signalName(WTERMSIG(run.status)) +
                                  "; its output ends: " + tail(log));
     if (!WIFEXITED(run.status) || WEXITSTATUS(run.status) != 0)
         throw std::runtime_error(cell + ": the renderer exited with status " + std::to_string(WEXITSTATUS(run.status)) +
                                  "; its output ends: " + tail(log));
-    if (!fs::is_regular_file(output, ignored))
+    if (!fs::exists(fs::symlink_status(output, ignored)))
         throw std::runtime_error(cell + ": the renderer exited with status 0 but wrote no image at {output} (" +
                                  output + ")");
     render::RenderResult r;
     try {
-        r.image = startsWith(output, "PF", 2) || startsWith(output, "Pf", 2) ? readPfm(output) : render::readImage(output);
+        requireRegularFile(output);
+        r.image = startsWith(output, "PF", 2) || startsWith(output, "Pf", 2) ? readPfm(output, o.width, o.height)
+                                                                              : render::readImage(output);
     } catch (const std::exception& e) {
         throw std::runtime_error(cell + ": cannot read the image it wrote (" + output + "): " + e.what());
     }
@@ -197,7 +294,7 @@ Reference ExternalRenderer::reference(const render::RenderOptions& o, const std:
     uint64_t seeds[2] = {o.seed, o.seed ^ 0x9e3779b97f4a7c15ull};
     for (uint64_t& s : seeds)
         while (std::find(cellSeeds.begin(), cellSeeds.end(), s) != cellSeeds.end()) ++s;
-    const std::string material = "external reference v1\ncontent " + contentHash() + "\npattern " + o.pattern +
+    const std::string material = "external reference v2\ncontent " + contentHash() + "\npattern " + o.pattern +
                                  "\nspp " + std::to_string(o.spp) + "\nseeds " + std::to_string(seeds[0]) + " " +
                                  std::to_string(seeds[1]) + "\nsize " + std::to_string(o.width) + "x" +
                                  std::to_string(o.height) + "\n";
@@ -205,23 +302,26 @@ Reference ExternalRenderer::reference(const render::RenderOptions& o, const std:
     ref.key = keyOf(material);
     const ExternalCache cache(cacheDir, ref.key);
     ref.imagePath = cache.image;
+    // The .key file is the key material followed by both images' pixel checksums: an entry is used only when all
+    // of it verifies and every part is a regular file (reference_integrity.h), as for stipple-render's references.
     std::error_code ignored;
-    if (fs::is_regular_file(cache.key, ignored)) {
-        std::ifstream in(cache.key, std::ios::binary);
-        const std::string stored((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const bool present = fs::exists(fs::symlink_status(cache.key, ignored)) ||
+                         fs::exists(fs::symlink_status(cache.image, ignored)) ||
+                         fs::exists(fs::symlink_status(cache.variance, ignored));
+    if (present) {
         try {
-            if (stored == material) {
-                ref.image = render::readImage(cache.image);
-                ref.variance = render::readImage(cache.variance);
-                if (ref.image.width == o.width && ref.image.height == o.height &&
-                    ref.variance.width == o.width && ref.variance.height == o.height) {
-                    ref.fromCache = true;
-                    return ref;
-                }
-                ref.cacheProblem = "cached images of another size";
-            } else {
-                ref.cacheProblem = "its key material differs";
-            }
+            requireRegularFile(cache.key);
+            const std::string stored = render::readFileBounded(cache.key, 1 << 20, "cache key");
+            if (!stored.starts_with(material)) throw std::runtime_error("its key material differs");
+            ref.image = readCachedImage(cache.image);
+            ref.variance = readCachedImage(cache.variance);
+            if (ref.image.width != o.width || ref.image.height != o.height || ref.variance.width != o.width ||
+                ref.variance.height != o.height)
+                throw std::runtime_error("cached images of another size");
+            if (stored.substr(material.size()) != checksumLines(ref.image, ref.variance))
+                throw std::runtime_error("the pixels do not match their checksums");
+            ref.fromCache = true;
+            return ref;
         } catch (const std::exception& e) {
             ref.cacheProblem = e.what();
         }
@@ -232,6 +332,13 @@ Reference ExternalRenderer::reference(const render::RenderOptions& o, const std:
     const render::RenderResult a = render(half);
     half.seed = seeds[1];
     const render::RenderResult b = render(half);
+    // Equal halves: the program ignores {seed} or maps both seeds to one value; every verdict would be confident
+    // and wrong.
+    if (a.image.rgb == b.image.rgb)
+        throw std::runtime_error(scene_.name + ": the reference's two halves (seeds " + std::to_string(seeds[0]) +
+                                 " and " + std::to_string(seeds[1]) + ", " + std::to_string(half.spp) +
+                                 " spp) are bitwise equal: the renderer ignores {seed} or maps these seeds to one "
+                                 "value ({seed} is any unsigned 64-bit number)");
     ref.image = a.image;
     ref.variance = a.image;
     for (size_t i = 0; i < a.image.rgb.size(); ++i) {
@@ -245,7 +352,7 @@ Reference ExternalRenderer::reference(const render::RenderOptions& o, const std:
     const render::ImageMetadata meta = {{"scene", scene_.name}, {"reference_key", ref.key}};
     render::writeExr(cache.image, ref.image, meta);
     render::writeExr(cache.variance, ref.variance, meta);
-    writeTextFile(cache.key, material); // last: it vouches for the two images
+    writeTextFile(cache.key, material + checksumLines(ref.image, ref.variance)); // last: it vouches for the images
     return ref;
 }
 
@@ -262,42 +369,6 @@ SceneFingerprint externalFingerprint(const MatrixScene& scene, uint32_t referenc
     f.integrator = "external: " + fs::path(scene.renderer.command[0]).filename().string();
     f.referenceSpp = referenceSpp;
     return f;
-}
-
-render::Image readPfm(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot open");
-    std::string magic;
-    long long width = 0, height = 0;
-    double scale = 0;
-    in >> magic >> width >> height >> scale;
-    if (!in || (magic != "PF" && magic != "Pf")) throw std::runtime_error(path + ": not a PFM file (header)");
-    if (width < 1 || height < 1 || width > 65536 || height > 65536 || scale == 0)
-        throw std::runtime_error(path + ": bad PFM size or scale");
-    in.get(); // the single whitespace after the scale
-    const int channels = magic == "PF" ? 3 : 1;
-    std::vector<float> data(size_t(width) * height * channels);
-    if (!in.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size() * sizeof(float))))
-        throw std::runtime_error(path + ": PFM data shorter than " + std::to_string(width) + "x" +
-                                 std::to_string(height) + "x" + std::to_string(channels) + " floats");
-    const bool bigEndian = scale > 0;
-    if (bigEndian)
-        for (float& v : data) {
-            uint32_t bits;
-            std::memcpy(&bits, &v, 4);
-            bits = __builtin_bswap32(bits);
-            std::memcpy(&v, &bits, 4);
-        }
-    render::Image image;
-    image.width = int(width);
-    image.height = int(height);
-    image.rgb.resize(size_t(width) * height * 3);
-    for (long long y = 0; y < height; ++y) // PFM rows run bottom to top
-        for (long long x = 0; x < width; ++x)
-            for (int c = 0; c < 3; ++c)
-                image.rgb[(size_t(height - 1 - y) * width + x) * 3 + c] =
-                    data[(size_t(y) * width + x) * channels + (channels == 3 ? c : 0)];
-    return image;
 }
 
 } // namespace stipple::validation

@@ -22,19 +22,28 @@
 
 namespace stipple::validation {
 
-// What the command line allows: the matrix's own program (allowMatrixProgram) or a program of its own that
-// replaces the template's first argument (program, non-empty).
+// What the command line allows. Every argument a program receives comes from the trusted side or is the checked
+// value of a placeholder: a matrix's template runs only when it is byte-equal to one of `commands` (the templates
+// of --renderer-command FILE), in full with allowMatrixProgram (--allow-renderer), or from its second argument on
+// with `program` (--renderer PROGRAM), which then replaces the first.
 struct RendererPermission {
     bool allowMatrixProgram = false;
     std::string program;
+    std::vector<std::vector<std::string>> commands;
+    double timeoutSeconds = 0; // --renderer-timeout: per image, over the matrix's; 0: the matrix's (0: none)
+    bool granted() const { return allowMatrixProgram || !program.empty(); }
 };
+
+// "" when the permission lets the scene's template run; else why not (the message says how to allow it).
+std::string checkRendererPermission(const MatrixScene& scene, const RendererPermission& permission);
 
 // One scene rendered by an external program. Every failure throws std::runtime_error naming the cell (scene,
 // pattern, spp, seed) and what went wrong: the program's exit status or signal and the end of its output, a
 // missing or unreadable image, an image of another size.
 class ExternalRenderer {
 public:
-    // Throws std::runtime_error when the command line did not allow running it.
+    // Throws std::runtime_error when the command line did not allow running it (checkRendererPermission) or the
+    // program does not resolve to one regular, executable, readable file.
     ExternalRenderer(const MatrixScene& scene, const RendererPermission& permission, std::string workDir);
 
     // One image: options.pattern, .spp, .seed, .width, .height. renderSeconds is the child's wall time,
@@ -60,14 +69,11 @@ private:
     std::vector<std::string> command_; // the template, the program replaced when the command line named one
     std::string program_;              // the resolved executable (for hashing)
     std::string workDir_;              // where images are written before they are read
+    double timeoutSeconds_ = 0;        // per image; 0: none
 };
 
 // What a run's fingerprint records of an external renderer's scene (the same in every shard, whichever program
 // the command line named): the matrix's command template, the scene file's bytes, the size, the reference spp.
 SceneFingerprint externalFingerprint(const MatrixScene& scene, uint32_t referenceSpp);
-
-// Reads an RGB PFM ("PF", little- or big-endian, rows bottom to top) or a greyscale one ("Pf", copied to RGB).
-// Throws std::runtime_error naming the file and what is wrong.
-render::Image readPfm(const std::string& path);
 
 } // namespace stipple::validation

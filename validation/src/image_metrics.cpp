@@ -49,6 +49,16 @@ ImageError compareImages(const Image& reference, const Image& image) {
     return e;
 }
 
+std::string unmeasurableWhy(const ImageError& error) {
+    const uint64_t all = error.pixels + error.nonFinitePixels;
+    if (error.pixels == 0) return "no pixel is finite in both the image and the reference (" + std::to_string(all) + " pixels)";
+    if (double(error.nonFinitePixels) > kMaxNonFinitePixelShare * double(all))
+        return std::to_string(error.nonFinitePixels) + " of " + std::to_string(all) +
+               " pixels are not finite (NaN or infinite) in the image or the reference; at most " +
+               std::to_string(kMaxNonFinitePixelShare * 100).substr(0, 4) + "% may be";
+    return "";
+}
+
 double noiseFloor(const Image& varianceOfMean) {
     checkShape(varianceOfMean, "variance");
     double sum = 0;
@@ -151,8 +161,14 @@ std::vector<double> blockSquaredErrors(const Image& reference, const Image& imag
     return sumPerBlock(reference, image, x, y, w, h, [](double squared, size_t) { return squared; });
 }
 
-std::vector<float> relativeErrorWeights(const Image& reference) {
+std::vector<float> relativeErrorWeights(const Image& reference, const Image& varianceOfMean) {
     checkShape(reference, "reference");
+    checkShape(varianceOfMean, "variance");
+    if (varianceOfMean.width != reference.width || varianceOfMean.height != reference.height)
+        throw std::invalid_argument("relative error weights: the variance image is " +
+                                    std::to_string(varianceOfMean.width) + "x" + std::to_string(varianceOfMean.height) +
+                                    ", the reference " + std::to_string(reference.width) + "x" +
+                                    std::to_string(reference.height));
     const size_t pixels = size_t(reference.width) * size_t(reference.height);
     std::vector<float> level(pixels, -1.0f);
     double sum = 0;
@@ -167,11 +183,41 @@ std::vector<float> relativeErrorWeights(const Image& reference) {
             ++finite;
         }
     const double m = finite ? sum / double(finite) : 0.0;
-    std::vector<float> weights(pixels, 0.0f);
+    std::vector<double> weights(pixels, 0.0);
     for (size_t p = 0; p < pixels; ++p)
         if (level[p] >= 0 && double(level[p]) + m > 0)
-            weights[p] = float(1.0 / ((double(level[p]) + m) * (double(level[p]) + m)));
-    return weights;
+            weights[p] = 1.0 / ((double(level[p]) + m) * (double(level[p]) + m));
+
+    // The reference's noise per block in relative units (its variance of the mean: the per-sample variance over
+    // its spp, the same factor in every pixel, so the ratio to the median does not depend on it).
+    const int columns = blockColumns(reference.width);
+    std::vector<double> noise(size_t(blockCount(reference.width, reference.height)), 0.0);
+    std::vector<int> counted(noise.size(), 0);
+    for (int j = 0; j < reference.height; ++j)
+        for (int i = 0; i < reference.width; ++i) {
+            const size_t p = size_t(j) * size_t(reference.width) + size_t(i);
+            const float* v = varianceOfMean.pixel(i, j);
+            if (weights[p] <= 0 || !finitePixel(v)) continue;
+            const size_t b = size_t(j / kErrorBlockSize) * size_t(columns) + size_t(i / kErrorBlockSize);
+            noise[b] += weights[p] * (std::abs(double(v[0])) + std::abs(double(v[1])) + std::abs(double(v[2])));
+            ++counted[b];
+        }
+    std::vector<double> positive;
+    for (size_t b = 0; b < noise.size(); ++b)
+        if (counted[b] && (noise[b] /= counted[b]) > 0) positive.push_back(noise[b]);
+    double median = 0;
+    if (!positive.empty()) {
+        std::nth_element(positive.begin(), positive.begin() + long(positive.size() / 2), positive.end());
+        median = positive[positive.size() / 2];
+    }
+    std::vector<float> out(pixels, 0.0f);
+    for (int j = 0; j < reference.height; ++j)
+        for (int i = 0; i < reference.width; ++i) {
+            const size_t p = size_t(j) * size_t(reference.width) + size_t(i);
+            const double s = noise[size_t(j / kErrorBlockSize) * size_t(columns) + size_t(i / kErrorBlockSize)];
+            out[p] = float(median > 0 && s > median ? weights[p] * median / s : weights[p]);
+        }
+    return out;
 }
 
 double relativeNoiseFloor(const Image& varianceOfMean, const std::vector<float>& weights, int x, int y, int w, int h) {

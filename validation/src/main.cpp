@@ -19,8 +19,11 @@
 
 #include "baseline.h"
 #include "checks.h"
+#include "external_command.h"
+#include "external_renderer.h"
 #include "cli_args.h"
 #include "matrix.h"
+#include "identical_renders.h"
 #include "merge.h"
 #include "preflight.h"
 #include "progress.h"
@@ -95,6 +98,31 @@ int main(int argc, char** argv) {
         std::cerr << "stipple-validate: " << args.matrix << ": " << e.what() << "\n";
         return kExitUsage;
     }
+    // External renderers: what the command line allows is checked against the matrix before anything runs.
+    RendererPermission permission{args.allowRenderer, args.renderer, {}, args.rendererTimeout};
+    if (!args.rendererCommand.empty() && args.merge.empty()) {
+        try {
+            permission.commands = readTrustedCommands(args.rendererCommand);
+        } catch (const std::exception& e) {
+            std::cerr << "stipple-validate: --renderer-command: " << e.what() << "\n";
+            return kExitUsage;
+        }
+        bool external = false;
+        for (const MatrixScene& s : matrix.scenes) {
+            if (s.renderer.empty()) continue;
+            external = true;
+            if (const std::string why = checkRendererPermission(s, permission); !why.empty()) {
+                std::cerr << "stipple-validate: " << why << "\n";
+                return kExitUsage;
+            }
+        }
+        // An option that checks nothing must not let a CI line pass.
+        if (!external) {
+            std::cerr << "stipple-validate: " << (args.renderer.empty() ? "--allow-renderer" : "--renderer")
+                      << " was given but no scene of " << args.matrix << " has an external renderer\n";
+            return kExitUsage;
+        }
+    }
     const bool shard = args.shardCount > 1;
     std::string cache = !args.cache.empty() ? args.cache
                         : !matrix.cacheDir.empty()
@@ -133,10 +161,14 @@ int main(int argc, char** argv) {
             o.shardIndex = args.shardIndex;
             o.shardCount = args.shardCount;
             o.referencesOnly = args.referencesOnly;
-            o.renderer = {args.allowRenderer, args.renderer};
+            o.renderer = permission;
             results = runMatrix(matrix, o);
         }
         if (args.referencesOnly) {
+            // Ready only when every scene's reference is: a failed one is named and the status says so.
+            for (const auto& k : results.skipped)
+                std::cerr << "stipple-validate: no reference for scene " << k.name << ": " << k.error << "\n";
+            if (!results.skipped.empty()) return kExitError;
             std::cout << "references ready in " << cache << "\n";
             return 0;
         }
@@ -154,6 +186,8 @@ int main(int argc, char** argv) {
                                 " only: checks are evaluated by --merge."
                           : "";
         for (const auto& k : results.skipped) in.note += " ERROR, scene skipped: " + k.error + ".";
+        const std::vector<std::string> identical = identicalSeedRenders(results.rows);
+        for (const auto& line : identical) in.note += " ERROR: " + line + ".";
         BaselineComparison baseline;
         if (!args.baseline.empty()) {
             Results base = readResultsJson(args.baseline);
@@ -196,7 +230,8 @@ int main(int argc, char** argv) {
                     in.baseline ? (baseline.failed ? ", baseline failed" : ", baseline passed") : "", wall,
                     (fs::path(args.out) / "index.html").string().c_str());
         for (const auto& k : results.skipped) std::cerr << "stipple-validate: scene skipped: " << k.error << "\n";
-        if (!results.skipped.empty()) return kExitError;
+        for (const auto& line : identical) std::cerr << "stipple-validate: " << line << "\n";
+        if (!results.skipped.empty() || !identical.empty()) return kExitError;
         return failed ? kExitChecksFailed : 0;
     } catch (const std::bad_alloc&) {
         std::cerr << "stipple-validate: out of memory\n";

@@ -96,10 +96,40 @@ struct Parser {
         if (!(v > 0)) fail(node, what + " must be > 0, got " + node.Scalar());
         return v;
     }
-    uint32_t spp(const yaml::Node& node, const std::string& what) const {
+    // A sample count: at most the library's N limit (STIPPLE_MAX_SAMPLES_PER_PIXEL), checked here rather than
+    // after every render; a reference is rendered as two halves, so its limit is twice that.
+    uint32_t spp(const yaml::Node& node, const std::string& what, bool reference = false) const {
+        const long long limit = kMaxSamplesPerPixel * (reference ? 2 : 1);
         long long v = get<long long>(node, what);
-        if (v < 1 || v > (1ll << 24)) fail(node, what + " must be in [1, 16777216], got " + node.Scalar());
+        if (v < 1 || v > limit)
+            fail(node, what + " must be in [1, " + std::to_string(limit) + "] (the library's limit on samples per " +
+                           "pixel" + (reference ? ", for each of the reference's two halves" : "") + "), got " +
+                           node.Scalar());
         return uint32_t(v);
+    }
+    // A name shown in reports, file names and messages: valid UTF-8, 1 to kMaxNameBytes bytes, no control
+    // characters.
+    static constexpr size_t kMaxNameBytes = 128;
+    std::string name(const yaml::Node& node, const std::string& what) const {
+        const std::string v = get<std::string>(node, what);
+        if (v.empty() || v.size() > kMaxNameBytes)
+            fail(node, what + " must be 1 to " + std::to_string(kMaxNameBytes) + " bytes long, got " +
+                           std::to_string(v.size()));
+        for (size_t i = 0; i < v.size();) {
+            const unsigned char c = static_cast<unsigned char>(v[i]);
+            const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+            bool ok = n > 0 && i + n <= v.size() && !(n == 1 && (c < 0x20 || c == 0x7f));
+            for (size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(v[i + k]) >> 6) == 0x2;
+            if (ok && n > 1) { // no overlong forms, surrogates or code points past U+10FFFF
+                uint32_t cp = c & (0xff >> (n + 1));
+                for (size_t k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(v[i + k]) & 0x3f);
+                ok = cp >= (n == 2 ? 0x80u : n == 3 ? 0x800u : 0x10000u) && cp <= 0x10ffff && !(cp >= 0xd800 && cp <= 0xdfff);
+            }
+            if (!ok)
+                fail(node, what + " must be valid UTF-8 without control characters (byte " + std::to_string(i) + ")");
+            i += n;
+        }
+        return v;
     }
     // An image side: the renderer's range (render::checkRenderSettings refuses the same).
     int imageSide(const yaml::Node& node, const std::string& what) const {
@@ -129,7 +159,7 @@ struct Parser {
     // renderer: { command: [program, arg, ...], format: exr | pfm } (external_renderer.h).
     ExternalCommand renderer(const yaml::Node& node) const {
         expectMap(node, "renderer");
-        onlyKeys(node, {"command", "format"}, "renderer");
+        onlyKeys(node, {"command", "format", "timeout"}, "renderer");
         ExternalCommand r;
         r.where = yaml.where(node);
         const yaml::Node command = required(node, "command", "renderer");
@@ -137,6 +167,11 @@ struct Parser {
             fail(command, "command must be a list: the program, then its arguments (no shell)");
         for (const auto& a : command) r.command.push_back(get<std::string>(a, "a command argument"));
         if (const std::string why = checkCommandTemplate(r.command); !why.empty()) fail(command, why);
+        if (node["timeout"]) {
+            r.timeoutSeconds = get<double>(node["timeout"], "timeout");
+            if (!(r.timeoutSeconds > 0 && r.timeoutSeconds <= 1e6))
+                fail(node["timeout"], "timeout must be seconds in (0, 1000000]");
+        }
         if (node["format"]) {
             r.format = get<std::string>(node["format"], "format");
             if (r.format != "exr" && r.format != "pfm") fail(node["format"], "format must be exr or pfm");
@@ -170,7 +205,7 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                        "a scene entry");
             if (s["renderer"]) ms.renderer = P.renderer(s["renderer"]);
             ms.file = P.get<std::string>(P.required(s, "file", "a scene entry"), "file");
-            if (s["name"]) ms.name = P.get<std::string>(s["name"], "name");
+            if (s["name"]) ms.name = P.name(s["name"], "name");
             if (s["width"]) ms.width = P.imageSide(s["width"], "width");
             if (s["height"]) ms.height = P.imageSide(s["height"], "height");
             if (s["integrator"]) {
@@ -180,15 +215,16 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                     P.fail(s["integrator"],
                            "unknown integrator '" + ms.integrator + "' (known: " + joined(known) + ")");
             }
-            if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp");
+            if (s["reference_spp"]) ms.referenceSpp = P.spp(s["reference_spp"], "reference_spp", true);
             if (const yaml::Node regions = s["regions"]) {
                 if (!regions.IsSequence())
                     P.fail(regions, "regions must be a list of { name, rect: [x0, y0, x1, y1] }");
+                std::map<std::string, std::string> regionFiles; // safeName -> region name
                 for (const auto& rn : regions) {
                     P.expectMap(rn, "a region");
                     P.onlyKeys(rn, {"name", "rect"}, "a region");
                     Region rg;
-                    rg.name = P.get<std::string>(P.required(rn, "name", "a region"), "region name");
+                    rg.name = P.name(P.required(rn, "name", "a region"), "region name");
                     const yaml::Node rect = P.required(rn, "rect", "a region");
                     if (!rect.IsSequence() || rect.size() != 4)
                         P.fail(rect, "rect must be [x0, y0, x1, y1], fractions of the image's width and height");
@@ -197,13 +233,12 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
                     if (!(0 <= v[0] && v[0] < v[2] && v[2] <= 1 && 0 <= v[1] && v[1] < v[3] && v[3] <= 1))
                         P.fail(rect, "rect must satisfy 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1");
                     rg.x0 = v[0], rg.y0 = v[1], rg.x1 = v[2], rg.y1 = v[3];
-                    for (const auto& other : ms.regions) {
-                        if (other.name == rg.name) P.fail(rn, "region '" + rg.name + "' appears twice");
-                        if (safeName(other.name) == safeName(rg.name))
-                            P.fail(rn, "region names '" + other.name + "' and '" + rg.name +
-                                           "' have the same file name '" + safeName(rg.name) +
-                                           "' in the report; rename one");
-                    }
+                    // By file name in a map: O(n log n), where a scan of the earlier regions was quadratic.
+                    const auto [it, fresh] = regionFiles.emplace(safeName(rg.name), rg.name);
+                    if (!fresh && it->second == rg.name) P.fail(rn, "region '" + rg.name + "' appears twice");
+                    if (!fresh)
+                        P.fail(rn, "region names '" + it->second + "' and '" + rg.name + "' have the same file name '" +
+                                       it->first + "' in the report; rename one");
                     ms.regions.push_back(rg);
                 }
             }
@@ -225,6 +260,10 @@ void parseScenes(const Parser& P, const yaml::Node& croot, const fs::path& base,
         std::error_code fileError; // the throwing overload aborted the run on a name too long for the system
         if (!fs::is_regular_file(ms.path, fileError))
             P.fail(s, "unknown scene file '" + ms.file + "' (looked for " + ms.path + ")");
+        // The path fills an external renderer's {scene}: it must not read as an option or break a line.
+        if (!ms.renderer.empty())
+            if (const std::string why = checkPlaceholderValue(ms.path); !why.empty())
+                P.fail(s, "the scene file '" + ms.path + "' cannot fill {scene}: " + why);
         if (ms.name.empty()) ms.name = fs::path(ms.file).stem().string();
         if (ms.name == "all") P.fail(s, "'all' is reserved for checks; give the scene another name");
         if (!sceneNames.insert(ms.name).second)
@@ -288,7 +327,7 @@ void parseReference(const Parser& P, const yaml::Node& croot, Matrix& m) {
         P.expectMap(r, "reference");
         P.onlyKeys(r, {"pattern", "spp", "seed"}, "reference");
         if (r["pattern"]) m.reference.pattern = P.pattern(r["pattern"]);
-        if (r["spp"]) m.reference.spp = P.spp(r["spp"], "reference spp");
+        if (r["spp"]) m.reference.spp = P.spp(r["spp"], "reference spp", true);
         if (r["seed"]) m.reference.seed = P.get<uint64_t>(r["seed"], "reference seed");
         if (std::find(m.seeds.begin(), m.seeds.end(), m.reference.seed) != m.seeds.end())
             P.fail(r, "the reference seed must differ from the cells' seeds (its noise would correlate with theirs)");
@@ -480,12 +519,20 @@ void parseChecks(const Parser& P, const yaml::Node& croot, Matrix& m) {
                 k.scene = c["scene"] ? sceneRef(c["scene"], true) : "all";
                 if (c["region"]) {
                     k.region = P.get<std::string>(c["region"], "region");
-                    const MatrixScene* ms = m.findScene(k.scene);
-                    bool known = k.region == "image";
-                    for (const auto& r : ms ? ms->regions : std::vector<Region>{}) known |= r.name == k.region;
-                    if (!known)
-                        P.fail(c["region"], "region must be 'image' or a region of the one scene named, got '" +
-                                                k.region + "'");
+                    // With scene: all, a region every scene has (one claim for a region the scenes share).
+                    std::vector<std::string> lacking;
+                    for (const auto& s : m.scenes) {
+                        if (k.scene != "all" && s.name != k.scene) continue;
+                        bool has = false;
+                        for (const auto& r : s.regions) has |= r.name == k.region;
+                        if (!has) lacking.push_back(s.name);
+                    }
+                    if (k.region != "image" && !lacking.empty())
+                        P.fail(c["region"], k.scene == "all"
+                                                ? "region '" + k.region + "' is not a region of every scene (" +
+                                                      joined(lacking) + " lack it); 'image' or a region all have"
+                                                : "region must be 'image' or a region of the one scene named, got '" +
+                                                      k.region + "'");
                 }
                 const yaml::Node patterns = P.required(c, "patterns", what);
                 if (!patterns.IsSequence() || patterns.size() < 2)
@@ -617,7 +664,7 @@ Matrix parseMatrix(const std::string& text, const std::string& path, const Matri
     const fs::path base = fs::path(path).parent_path();
     auto resolve = [&](const std::string& p) { return (base / p).lexically_normal().string(); };
 
-    m.name = croot["name"] ? P.get<std::string>(croot["name"], "name") : fs::path(path).stem().string();
+    m.name = croot["name"] ? P.name(croot["name"], "name") : fs::path(path).stem().string();
     if (croot["cache"]) m.cacheDir = resolve(P.get<std::string>(croot["cache"], "cache"));
     if (croot["threads"]) {
         m.threads = P.get<int>(croot["threads"], "threads");

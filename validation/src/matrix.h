@@ -30,8 +30,13 @@ struct ExternalCommand {
     std::vector<std::string> command;
     std::string format = "exr"; // exr | pfm: the extension of {output}
     std::string where;          // file:line:column of the template in the matrix
+    double timeoutSeconds = 0;  // timeout: seconds one image may take before the program is killed; 0: none
     bool empty() const { return command.empty(); }
 };
+
+// The library's limit on samples per pixel (STIPPLE_MAX_SAMPLES_PER_PIXEL in stipple.h, which the validation core
+// does not include; kept equal by hand): a matrix's spp is checked against it when read.
+inline constexpr long long kMaxSamplesPerPixel = 1ll << 20;
 
 struct MatrixScene {
     std::string name;          // used by checks and in the report; default: the file's stem

@@ -3,6 +3,7 @@
 
 #include "merge.h"
 
+#include "image_metrics.h"
 #include "regions.h"
 #include "report.h"
 #include "shard_fingerprint.h"
@@ -73,6 +74,30 @@ std::string rowProblem(const ResultRow& r, const MatrixScene& ms, const SceneInf
         if (bad(v)) return "a region mse " + num(v) + " is not a finite value ≥ 0";
     for (double v : r.regionMseCorrected)
         if (bad(v)) return "a region mse_corrected " + num(v) + " is not a finite value ≥ 0";
+    // The per-block errors (what the compare claims' intervals are made of) must be the row's own: one value per
+    // block of the image and of each region, finite and ≥ 0, and the image's squared errors summing to its mse
+    // times the pixels compared.
+    const size_t blocks = size_t(blockCount(r.width, r.height));
+    size_t regionBlocks = 0;
+    for (const Region& region : ms.regions) {
+        const PixelRect px = pixelRect(region, r.width, r.height);
+        regionBlocks += size_t(blockCount(px.w, px.h));
+    }
+    for (auto [what, list, count] :
+         {std::tuple{"block_sse", &r.blockSse, blocks}, {"block_rse", &r.blockRse, blocks},
+          {"block_flip", &r.blockFlip, blocks}, {"region_block_sse", &r.regionBlockSse, regionBlocks},
+          {"region_block_rse", &r.regionBlockRse, regionBlocks}, {"region_block_flip", &r.regionBlockFlip, regionBlocks}}) {
+        if (list->size() != count)
+            return std::string(what) + " has " + std::to_string(list->size()) + " values; the image (or its regions) has " +
+                   std::to_string(count) + " blocks";
+        for (double v : *list)
+            if (bad(v)) return std::string("a ") + what + " value " + num(v) + " is not a finite value ≥ 0";
+    }
+    double sse = 0;
+    for (double v : r.blockSse) sse += v;
+    const double compared = double(uint64_t(r.width) * uint64_t(r.height) - r.nonFinitePixels);
+    if (std::fabs(sse - r.mse * compared) > 1e-6 * std::max(sse, r.mse * compared) + 1e-12)
+        return "block_sse sums to " + num(sse) + ", not mse × pixels compared = " + num(r.mse * compared);
     return {};
 }
 
@@ -138,9 +163,18 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
             throw std::runtime_error(dir + ": renderer version '" + r.rendererVersion + "' differs from '" +
                                      merged.rendererVersion + "' of the other shards");
         for (const auto& k : r.skipped) merged.skipped.push_back({k.name, dir + ": " + k.error}); // stays reported
+        // One scene, one content: shards rendered by different programs or from different scene files (an
+        // external renderer's hash covers its program's bytes) are not one run.
         for (const auto& s : r.scenes) {
             bool known = false;
-            for (const auto& k : merged.scenes) known |= k.name == s.name;
+            for (const auto& k : merged.scenes) {
+                if (k.name != s.name) continue;
+                known = true;
+                if (k.contentHash != s.contentHash || k.integrator != s.integrator)
+                    throw std::runtime_error(dir + ": scene " + s.name + " was rendered from other content (" +
+                                             s.integrator + ", content hash " + s.contentHash + ") than in the other "
+                                             "shards (" + k.integrator + ", " + k.contentHash + ")");
+            }
             if (!known) merged.scenes.push_back(s);
         }
         for (const auto& row : r.rows) {

@@ -122,6 +122,11 @@ std::string referenceKeyMaterial(const render::Scene& scene, const render::Rende
            "|halves";
 }
 
+render::Image readCachedImage(const std::string& path) {
+    requireRegularFile(path);
+    return render::readImage(path);
+}
+
 Reference loadOrRenderReference(const render::Scene& scene, const std::string& sceneFile,
                                 const render::RenderOptions& options, const std::string& cacheDir) {
     Reference ref;
@@ -148,8 +153,8 @@ Reference loadOrRenderReference(const render::Scene& scene, const std::string& s
                 Provenance p = parseProvenance(render::readFileBounded(provenancePath, 1 << 20, "cache provenance"));
                 ref.cacheProblem = verifyProvenance(p, ref.key, keyMaterial, options.width, options.height);
                 if (ref.cacheProblem.empty()) {
-                    ref.image = render::readImage(ref.imagePath);
-                    ref.variance = render::readImage(variancePath);
+                    ref.image = readCachedImage(ref.imagePath);
+                    ref.variance = readCachedImage(variancePath);
                     ref.cacheProblem = verifyPixels(p, ref.image, ref.variance);
                 }
             } catch (const std::exception& e) {

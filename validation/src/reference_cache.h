@@ -28,6 +28,10 @@ std::string referenceKeyMaterial(const render::Scene& scene, const render::Rende
 // The 16-hex-digit key of a key material.
 std::string keyOf(const std::string& keyMaterial);
 
+// An image of a cache entry, read only after requireRegularFile (reference_integrity.h): never through a symlink,
+// never from a FIFO or a device.
+render::Image readCachedImage(const std::string& path);
+
 // Returns the cached reference for these options, or renders it (options.threads, .pattern, .spp, .seed,
 // size, integrator and depth as given) and stores it under cacheDir. An entry is used only when its provenance
 // has the full key and both EXRs match its pixel checksums (reference_integrity.h); anything else is rendered

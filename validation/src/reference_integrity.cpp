@@ -5,6 +5,11 @@
 
 #include <stipple/render/content_hash.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -19,6 +24,16 @@ std::string pixelChecksumHex(const render::Image& image) {
         .addBytes(size, sizeof size)
         .addBytes(image.rgb.data(), image.rgb.size() * sizeof(float))
         .hex();
+}
+
+void requireRegularFile(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        throw std::runtime_error(path + (errno == ELOOP ? ": a symlink" : std::string(": ") + std::strerror(errno)));
+    struct stat st {};
+    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    ::close(fd);
+    if (!regular) throw std::runtime_error(path + " is not a regular file");
 }
 
 Provenance parseProvenance(const std::string& jsonText) {

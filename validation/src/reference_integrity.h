@@ -30,6 +30,10 @@ Provenance parseProvenance(const std::string& jsonText);
 std::string verifyProvenance(const Provenance& p, const std::string& key, const std::string& keyMaterial, int width,
                              int height);
 
+// Throws std::runtime_error unless `path` is a regular file, opened without following a symlink and without
+// blocking (a FIFO, a device, a folder or a symlink in a cache is refused before any read; a FIFO never hangs).
+void requireRegularFile(const std::string& path);
+
 // Empty when both images have the provenance's size and checksums; otherwise what differs.
 std::string verifyPixels(const Provenance& p, const render::Image& image, const render::Image& variance);
 

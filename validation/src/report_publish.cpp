@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <unistd.h>
 #include <stdio.h>
 
 namespace stipple::validation {
@@ -107,6 +108,19 @@ void ReportStaging::publish() {
     render::SignalHold hold;
     const std::string& target = target_;
     std::error_code ec;
+    // The folder was checked when the run started; whatever was made or filled there since is checked again here,
+    // under the hold, just before the exchange. A folder that is no longer a report's keeps its files, and the new
+    // report is kept beside it under a name no sweep removes.
+    if (!isReplaceableReportFolder(target)) {
+        const std::string kept = target + ".unpublished-" + std::to_string(::getpid());
+        std::string where = temp_.path();
+        if (std::rename(temp_.path().c_str(), kept.c_str()) == 0) {
+            temp_.release();
+            where = kept;
+        }
+        throw std::runtime_error("-o " + target + ": changed during the run and is no longer a report folder (files "
+                                 "a report does not have); it is left untouched and the new report is in " + where);
+    }
     if (fs::exists(target, ec)) {
         // One atomic step: the old report takes the temporary's name, the new one the target's.
         if (renameat2(AT_FDCWD, temp_.path().c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0) {

@@ -28,7 +28,9 @@ public:
     explicit ReportStaging(const std::string& target);
     // The folder to write the report into.
     const std::string& dir() const { return temp_.path(); }
-    // Swaps the finished report into place.
+    // Swaps the finished report into place, after checking again (signals held) that the target is still a
+    // folder it may replace. Throws std::runtime_error otherwise, leaving the target untouched and the new report
+    // in <target>.unpublished-<pid>.
     void publish();
 
 private:

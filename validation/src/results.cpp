@@ -67,6 +67,8 @@ std::vector<CellAggregate> aggregate(const std::vector<ResultRow>& rows) {
             cpu.push_back(r.cpuSeconds);
             c.floorLimitedSeeds += r.floorLimited;
             c.nonFinitePixels += r.nonFinitePixels;
+            c.unmeasuredSeeds += !std::isfinite(r.mse) || !std::isfinite(r.mseCorrected) ||
+                                 !std::isfinite(r.rms) || !std::isfinite(r.rmsCorrected);
         }
         c.seeds = j - i;
         c.rms = meanInterval(rms);
@@ -100,17 +102,24 @@ std::vector<SlopeFit> fitSlopes(const std::vector<ResultRow>& rows, const Matrix
             f.scene = scene.name;
             f.pattern = pattern;
             std::vector<double> x, y;
+            bool unmeasured = false;
             for (const auto& r : rows) {
                 if (r.scene != scene.name || r.pattern != pattern) continue;
-                if (!(r.rmsCorrected > 0) || !std::isfinite(r.rmsCorrected)) {
+                // A point with no finite error makes the fit unmeasured, never a fit of the other points.
+                if (!std::isfinite(r.rmsCorrected) || !std::isfinite(r.rms)) {
+                    unmeasured = true;
+                    continue;
+                }
+                if (!(r.rmsCorrected > 0)) {
                     ++f.excluded;
                     continue;
                 }
                 x.push_back(std::log(double(r.spp)));
                 y.push_back(std::log(r.rmsCorrected));
             }
-            if (x.empty() && f.excluded == 0) continue;
+            if (x.empty() && f.excluded == 0 && !unmeasured) continue;
             f.fit = fitLine(x, y);
+            if (unmeasured) f.fit.slope = f.fit.intercept = f.fit.slopeHalfWidth = std::nan("");
             fits.push_back(f);
         }
     return fits;

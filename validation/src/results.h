@@ -82,6 +82,7 @@ struct CellAggregate {
     int floorLimitedSeeds = 0;
     uint64_t nonFinitePixels = 0;
     size_t seeds = 0;
+    size_t unmeasuredSeeds = 0; // seeds whose error is not a finite number (a merged or hand-made row): no verdict
 };
 
 // Fitted log RMS vs log spp over per-seed points of one (scene, pattern).

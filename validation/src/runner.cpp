@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include <stipple/render/renderer.h>
+#include <stipple/render/temp_files.h>
 
 #include "image_metrics.h"
 #include "progress.h"
@@ -73,6 +74,10 @@ double warmUp(const render::Scene& scene, const render::RenderOptions& base, con
 ResultRow measureRow(const std::string& scene, const render::RenderOptions& o, const render::RenderResult& r,
                      const Reference& ref, double noiseFloor) {
     const ImageError e = compareImages(ref.image, r.image);
+    // No verdict from a broken image: the cell is an error, never an error of 0 or of a few pixels.
+    if (const std::string why = unmeasurableWhy(e); !why.empty())
+        throw std::runtime_error("scene " + scene + ", " + o.pattern + ", " + std::to_string(o.spp) + " spp, seed " +
+                                 std::to_string(o.seed) + ": the image cannot be measured: " + why);
     ResultRow row;
     row.scene = scene;
     row.pattern = o.pattern;
@@ -165,7 +170,7 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
     const FlipMaps flip = ldrFlipLinear(ref.image, image);
     row.flip = flip.mean();
     row.blockSse = blockSquaredErrors(ref.image, image, 0, 0, image.width, image.height);
-    const std::vector<float> weights = relativeErrorWeights(ref.image);
+    const std::vector<float> weights = relativeErrorWeights(ref.image, ref.variance);
     row.blockRse = blockRelativeSquaredErrors(ref.image, image, weights, 0, 0, image.width, image.height);
     row.rseFloor = relativeNoiseFloor(ref.variance, weights, 0, 0, image.width, image.height);
     row.blockFlip = blockSums(flip.flip, flip.width, 0, 0, image.width, image.height);
@@ -194,21 +199,29 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
 // and the fingerprint say about it.
 struct ExternalScene {
     const MatrixScene& ms;
-    std::string workDir;
+    // The work folder: made only once the command line's permission is checked (a refused scene leaves none),
+    // named and registered as a temporary in the cache folder, so a signal removes it and the next run's sweep
+    // finds it after a SIGKILL.
+    render::TempPath work;
     ExternalRenderer renderer;
-    ExternalScene(const MatrixScene& scene, const RendererPermission& permission)
-        : ms(scene), workDir(makeWorkDir()), renderer(scene, permission, workDir) {}
-    ~ExternalScene() {
-        std::error_code ignored;
-        fs::remove_all(workDir, ignored);
+    ExternalScene(const MatrixScene& scene, const RendererPermission& permission, const std::string& cacheDir)
+        : ms(scene), work(permitted(scene, permission, cacheDir)), renderer(scene, permission, work.path()) {
+        render::SignalHold hold; // made and registered, or not at all
+        std::error_code ec;
+        if (!fs::create_directory(work.path(), ec) || ec)
+            throw std::runtime_error("cannot make a work folder for an external renderer (" + work.path() +
+                                     "): " + (ec ? ec.message() : std::string("it exists")));
     }
     ExternalScene(const ExternalScene&) = delete;
     ExternalScene& operator=(const ExternalScene&) = delete;
 
-    static std::string makeWorkDir() {
-        std::string dir = (fs::temp_directory_path() / "stipple-validate-XXXXXX").string();
-        if (!mkdtemp(dir.data())) throw std::runtime_error("cannot make a temporary folder for an external renderer");
-        return dir;
+    static std::string permitted(const MatrixScene& scene, const RendererPermission& permission,
+                                 const std::string& cacheDir) {
+        if (const std::string why = checkRendererPermission(scene, permission); !why.empty())
+            throw std::runtime_error(why);
+        std::error_code ec;
+        fs::create_directories(cacheDir, ec);
+        return fs::absolute(fs::path(cacheDir) / "external-work").lexically_normal().string();
     }
     render::RenderOptions options(int threads) const {
         render::RenderOptions o;
@@ -269,7 +282,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             if (ms.renderer.empty())
                 scene = loadMatrixScene(ms, m, opt);
             else
-                external.emplace(ms, opt.renderer);
+                external.emplace(ms, opt.renderer, opt.cacheDir);
             const render::RenderOptions base =
                 scene ? resolveRenderOptions(ms, *scene, threads) : external->options(threads);
             auto renderCell = [&](const render::RenderOptions& o) {

@@ -20,6 +20,7 @@
 #include "image_metrics.h"
 #include "regions.h"
 #include "statistics.h"
+#include "study_answers.h"
 
 namespace stipple::validation {
 
@@ -142,6 +143,19 @@ const VerdictRow* studyVerdict(const std::vector<CheckOutcome>& outcomes, const 
     return nullptr;
 }
 
+// The perceptual column of the first screen's table for (scene, region, A = p, B = q): the study-tagged FLIP verdict
+// where a check asks for one (with holds / refuted), else the mean-FLIP comparison measured from the rows (per
+// sample, no statement to judge). One function, so a perceptual measure can be added in one place.
+std::string perceptualStudyCell(const ReportInputs& in, const MatrixScene& scene, int region, const std::string& p,
+                                const std::string& q, const VerdictRow* tagged, bool flipped) {
+    if (tagged) return comparisonCell(tagged->comparison, tagged->status, flipped);
+    const Comparison c = comparePatterns(in.results->rows, scene, p, q, in.matrix->spp.back(), region, true, false);
+    if (c.verdict == Verdict::Unmeasured) return "<td>–</td>";
+    return fmt("<td class=\"v\">%.3g× <small>(%.3g–%.3g)</small><br><strong>%s</strong> <small>measured, no "
+               "statement</small></td>",
+               c.ratio, c.lo95, c.hi95, verdictName(c.verdict));
+}
+
 // The first screen's table: per study statement's pair, scene and region, the three measurements.
 std::string studyTableHtml(const ReportInputs& in) {
     const Matrix& m = *in.matrix;
@@ -179,8 +193,9 @@ std::string studyTableHtml(const ReportInputs& in) {
                     bool flipped = false;
                     std::string statement;
                     const VerdictRow* v = studyVerdict(in.outcomes, col, s.name, region, p, q, flipped, statement);
-                    cells += v ? comparisonCell(v->comparison, v->status, flipped) : "<td>–</td>";
                     any |= v != nullptr;
+                    if (col.flip) cells += withPeopleVerdict(perceptualStudyCell(in, s, ri, p, q, v, flipped), in, s.name, region, p, q);
+                    else cells += v ? comparisonCell(v->comparison, v->status, flipped) : "<td>–</td>";
                 }
                 if (!any) continue;
                 o << "<tr><td><a href=\"#scene-" << safeName(s.name) << "\">" << html(s.name) << "</a>, "
@@ -189,10 +204,8 @@ std::string studyTableHtml(const ReportInputs& in) {
             }
         }
     o << "</table></div>\n<p class=\"note\">Ratio of A's error to B's (below 1: A better), 95% interval; error: "
-         "the relative squared error Σ<sub>rgb</sub> (I<sub>ref</sub> − I)² / (reference + image mean)², capped at "
-      << fmt("%g", 3 * kRelativeErrorCap * kRelativeErrorCap)
-      << " per pixel (a few bright pixels cannot decide it; the checks' figures give the plain-MSE ratio beside), "
-         "or mean FLIP; "
+         "the verdicts' relative squared error, weighted by the reference's noise (<a href=\"#deciding\">how</a>; "
+         "the checks' figures give the study's plain MSE beside it, labelled, without a verdict), or mean FLIP; "
          "<strong>EQUIVALENT</strong>: the 90% interval lies inside the margin (two one-sided tests at 5%), "
          "<strong>BETTER</strong> / <strong>WORSE</strong>: the 95% interval excludes 1, else <strong>NOT "
          "SEPARATED</strong>. <em>holds / refuted / undecided</em>: the study's statement of the column against that "
@@ -230,30 +243,35 @@ std::string bestPatternText(const ReportInputs& in, const MatrixScene& s, bool e
 } // namespace
 
 std::string verdictHeadlineHtml(const ReportInputs& in) {
+    std::ostringstream o;
+    const ClaimCounts n = countClaims(in.outcomes);
+    o << "<div class=\"headline\"><p class=\"counts\"><strong><span id=\"claims-total\">" << n.total
+      << "</span> claims: <span class=\"PASS\" id=\"claims-pass\">" << n.pass << "</span> PASS, <span class=\"FAIL\" "
+      << "id=\"claims-fail\">" << n.fail << "</span> failed (they fail the run), <span id=\"claims-refuted\">"
+      << n.refuted << "</span> study statements refuted, <span id=\"claims-reported\">" << n.reported
+      << "</span> findings reported, <span class=\"NOT\" id=\"claims-not-separated\">" << n.notSeparated
+      << "</span> NOT SEPARATED.</strong></p></div>\n";
+    o << studyAnswersHtml(in);
+    return o.str();
+}
+
+std::string studyDetailsHtml(const ReportInputs& in) {
     const Matrix& m = *in.matrix;
     std::ostringstream o;
-    size_t pass = 0, fail = 0, ns = 0, failing = 0;
     size_t verdicts = 0, undecided = 0;
-    for (const auto& c : in.outcomes) {
-        (c.status == CheckStatus::Pass ? pass : c.status == CheckStatus::Fail ? fail : ns)++;
-        failing += c.failsRun;
+    for (const auto& c : in.outcomes)
         for (const auto& v : c.verdicts) {
             ++verdicts;
             undecided += v.comparison.verdict == Verdict::NotSeparated || v.comparison.verdict == Verdict::Unmeasured;
         }
-    }
-    o << "<div class=\"headline\"><p class=\"counts\"><strong><span id=\"claims-total\">" << in.outcomes.size()
-      << "</span> claims: <span class=\"PASS\" id=\"claims-pass\">" << pass << "</span> PASS, <span class=\"FAIL\" "
-      << "id=\"claims-fail\">" << fail << "</span> FAIL, <span class=\"NOT\" id=\"claims-not-separated\">" << ns
-      << "</span> NOT SEPARATED; <span id=\"claims-failing\">" << failing
-      << "</span> fail the run.</strong> " << verdicts << " comparisons, " << undecided
-      << " not separated.</p>\n<p>Matrix " << html(m.name) << ": " << m.scenes.size() << " scenes × "
-      << m.patterns.size() << " patterns × " << m.spp.size() << " spp × " << m.seeds.size()
-      << " seeds. Machine: " << std::thread::hardware_concurrency()
+    o << "<p class=\"note\">" << verdicts << " comparisons, " << undecided << " not separated. Matrix " << html(m.name)
+      << ": " << m.scenes.size() << " scenes × " << m.patterns.size() << " patterns × " << m.spp.size() << " spp × "
+      << m.seeds.size() << " seeds. Machine: " << std::thread::hardware_concurrency()
       << " hardware threads; load average (1, 5, 15 min) when the report was written: " << html(loadAverage())
-      << ". The study's Figure 3 (generation time against N), made by <code>ci/main.sh</code> after this report: "
-         "<a href=\"figure3/figure3.png\" data-made-after=\"1\">figure3/figure3.png</a>, "
-         "<a href=\"figure3/summary.md\" data-made-after=\"1\">its tables</a>.</p></div>\n";
+      << ".<span id=\"figure3\"> The study's Figure 3 (generation time against N), made by <code>ci/main.sh</code> "
+         "after this report: <a href=\"figure3/figure3.png\" data-made-after=\"1\">figure3/figure3.png</a>, <a "
+         "href=\"figure3/summary.md\" data-made-after=\"1\">its tables</a>.<img src=\"figure3/figure3.png\" "
+         "alt=\"Figure 3\" data-made-after=\"1\" hidden onerror=\"document.getElementById('figure3').remove()\"></span></p>\n";
     o << studyTableHtml(in) << perceptualStudyHtml(in);
     o << "<h2 id=\"best\">Best pattern per scene at " << m.spp.back()
       << " spp (whole image)</h2>\n<div class=\"wide\"><table><tr><th>scene</th><th>per sample (least "

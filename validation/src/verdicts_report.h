@@ -12,8 +12,12 @@
 
 namespace stipple::validation {
 
-// The headline: claim counts (with ids the browser test reads), the machine, one sentence per scene.
+// The first screen: claim counts as the terminal gives them (with ids the browser test reads) and the study's
+// answers in sentences (study_answers.h).
 std::string verdictHeadlineHtml(const ReportInputs& in);
+// Below it: the study's statements per scene and region in a table, the best pattern per scene, the run's
+// matrix and machine, and Figure 3 where ci/main.sh made it.
+std::string studyDetailsHtml(const ReportInputs& in);
 // A scene's equal-time / perceptual table (whole image and regions) and its region crop grids.
 std::string sceneVerdictsHtml(const ReportInputs& in, const MatrixScene& scene);
 // The colour of a pattern in plots and tables (Okabe–Ito, safe for colour-blind readers).

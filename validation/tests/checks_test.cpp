@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 // Checks on synthetic results: each outcome (PASS, FAIL, NOT SEPARATED) is reached for the right reason;
-// the baseline comparison and results.json round trip.
+// the baseline comparison and results.json round trip; seeds that rendered one image.
 #define BOOST_TEST_MODULE validation_checks
 #include <boost/test/unit_test.hpp>
 
@@ -13,7 +13,10 @@
 
 #include "baseline.h"
 #include "checks.h"
+#include "identical_renders.h"
+#include "image_metrics.h"
 #include "report.h"
+#include "study_answers.h"
 #include "test_vocabulary.h"
 
 using namespace stipple::validation;
@@ -178,6 +181,11 @@ BOOST_AUTO_TEST_CASE(results_json_round_trips_and_baseline_compares) {
     BOOST_CHECK_EQUAL(back.scenes.at(0).noiseFloor, 1e-5);
     BOOST_CHECK(back.skipped == r.skipped);
 
+    // A row without a finite error fails any baseline comparison (see no_verdict_from_cells_without_a_finite_error);
+    // the rest compares rows that all have one.
+    BOOST_CHECK(compareToBaseline(cells, aggregate(back.rows), 1.5).failed);
+    r.rows[0].rms = back.rows[0].rms = r.rows[0].rmsCorrected;
+    cells = aggregate(r.rows);
     // Same run: no regression. Worse RMS beyond the intervals, or slower beyond the factor: FAIL.
     BOOST_CHECK(!compareToBaseline(cells, aggregate(back.rows), 1.5).failed);
     auto worse = r.rows;
@@ -235,4 +243,113 @@ BOOST_AUTO_TEST_CASE(csv_fields_are_quoted) {
     const std::string line = csvRow(row, resultRowFields());
     BOOST_CHECK(line.rfind("\"box, lit\",independent,", 0) == 0);
     BOOST_CHECK_EQUAL(csvHeader(resultRowFields()).substr(0, 24), "scene,pattern,spp,seed,w");
+}
+
+BOOST_AUTO_TEST_CASE(bitwise_equal_seed_renders_are_named) {
+    // Four seeds of one cell; seeds 2 and 7 rendered the same image (the same per-block errors), as a renderer that
+    // keeps 31 bits of {seed} would for 2 and 2 + 2^31. A black cell (every block 0) is not a repeat.
+    std::vector<ResultRow> rows;
+    const std::vector<std::vector<double>> blocks = {{1, 2, 3}, {4, 5, 6}, {1, 2, 3.5}, {4, 5, 6}};
+    const uint64_t seeds[] = {1, 2, 5, 7};
+    for (size_t i = 0; i < 4; ++i) {
+        ResultRow r;
+        r.scene = "box";
+        r.pattern = "stratified";
+        r.spp = 8;
+        r.seed = seeds[i];
+        r.blockSse = blocks[i];
+        r.mse = blocks[i][0];
+        rows.push_back(r);
+        r.pattern = "independent";
+        r.blockSse = {0, 0, 0};
+        r.mse = 0;
+        rows.push_back(r);
+    }
+    const std::vector<std::string> found = identicalSeedRenders(rows);
+    BOOST_REQUIRE_EQUAL(found.size(), 1u);
+    BOOST_CHECK_MESSAGE(found[0].find("box, stratified, 8 spp") != std::string::npos, found[0]);
+    BOOST_CHECK_MESSAGE(found[0].find("seeds 2, 7") != std::string::npos, found[0]);
+    BOOST_CHECK_MESSAGE(found[0].find("64-bit") != std::string::npos, found[0]);
+    rows[2].blockSse = {4, 5, 6.5}; // seed 2 (stratified) now differs from seed 7
+    BOOST_CHECK(identicalSeedRenders(rows).empty());
+}
+
+BOOST_AUTO_TEST_CASE(refuted_study_statements_are_not_counted_as_failures) {
+    // As the terminal counts: FAIL is what fails the run. A study statement the data refutes (fails_run: false) is
+    // refuted, a library finding that did not hold and does not fail the run is reported.
+    std::vector<CheckOutcome> o(6);
+    o[0].status = CheckStatus::Pass;
+    o[1].status = CheckStatus::Fail, o[1].failsRun = true;
+    o[2].status = CheckStatus::Fail, o[2].check.study = "Poisson disk as good as stratified per sample";
+    o[3].status = CheckStatus::Fail;
+    o[4].status = CheckStatus::NotSeparated;
+    o[5].status = CheckStatus::NotSeparated, o[5].failsRun = true;
+    const ClaimCounts n = countClaims(o);
+    BOOST_CHECK_EQUAL(n.total, 6u);
+    BOOST_CHECK_EQUAL(n.pass, 1u);
+    BOOST_CHECK_EQUAL(n.fail, 2u);
+    BOOST_CHECK_EQUAL(n.refuted, 1u);
+    BOOST_CHECK_EQUAL(n.reported, 1u);
+    BOOST_CHECK_EQUAL(n.notSeparated, 1u);
+}
+
+BOOST_AUTO_TEST_CASE(no_verdict_from_cells_without_a_finite_error) {
+    // Every stratified seed measured against an image with no finite pixel: its MSE is not a number. Each
+    // aggregate that meets it says so, and no claim that needs the cell passes.
+    Fixture f;
+    std::ofstream(f.dir / "claims.yaml") << R"(scenes: [box.yaml]
+patterns: [independent, stratified, poisson]
+spp: [4, 16, 64]
+seeds: 4
+reference: { spp: 1024 }
+checks:
+  - { type: ordering, scene: box, spp_min: 16, order: [stratified, independent] }
+  - { type: slope, scene: box, pattern: stratified, expected: -0.75, tolerance: 0.05 }
+  - { type: compare, scene: box, patterns: [stratified, independent], basis: samples, expect: better }
+  - { type: equal_spp, scene: box, order: [stratified, independent] }
+)";
+    const Matrix m = loadMatrix((f.dir / "claims.yaml").string(), test::kVocabulary);
+    const double floor = 1e-4;
+    BOOST_CHECK(std::isnan(correctedMse(std::nan(""), floor))); // never max(NaN − floor, 0) = 0
+    BOOST_CHECK(std::isnan(correctedMse(0.5, std::nan(""))));
+    BOOST_CHECK_EQUAL(correctedMse(0.5, floor), 0.5 - floor);
+    std::vector<ResultRow> rows = syntheticRows();
+    for (ResultRow& r : rows) {
+        r.mseCorrected = correctedMse(r.mse, floor);
+        r.rmsCorrected = std::sqrt(r.mseCorrected);
+        if (r.pattern != "stratified") continue;
+        r.mse = r.rms = std::nan(""); // what compareImages gives an image with no finite pixel
+        r.mseCorrected = correctedMse(r.mse, floor);
+        r.rmsCorrected = std::sqrt(r.mseCorrected);
+    }
+    sortRows(rows, m);
+    const auto cells = aggregate(rows);
+    const CellAggregate* broken = findCell(cells, "box", "stratified", 64);
+    BOOST_REQUIRE(broken);
+    BOOST_CHECK_EQUAL(broken->unmeasuredSeeds, 4u);
+    BOOST_CHECK(!std::isfinite(broken->rms.mean));
+    BOOST_CHECK_EQUAL(findCell(cells, "box", "independent", 64)->unmeasuredSeeds, 0u);
+    const auto slopes = fitSlopes(rows, m);
+    for (const auto& s : slopes)
+        if (s.pattern == "stratified") BOOST_CHECK(std::isnan(s.fit.slope)); // not a fit of the remaining points
+    const auto out = evaluateChecks(m, rows, cells, slopes);
+    BOOST_REQUIRE_EQUAL(out.size(), 4u);
+    for (const auto& o : out) {
+        BOOST_TEST_MESSAGE(formatOutcome(o));
+        BOOST_CHECK_MESSAGE(o.status != CheckStatus::Pass, formatOutcome(o));
+        BOOST_CHECK(o.failsRun);
+    }
+    BOOST_CHECK(out[0].status == CheckStatus::Fail);
+    BOOST_CHECK(formatOutcome(out[0]).find("without a finite error") != std::string::npos);
+    BOOST_CHECK(out[1].status == CheckStatus::Fail);
+    // The baseline: a cell without a finite error now, or in the baseline, fails the comparison.
+    const auto good = aggregate([&] {
+        auto r = syntheticRows();
+        sortRows(r, m);
+        return r;
+    }());
+    const BaselineComparison now = compareToBaseline(cells, good, 10.0);
+    BOOST_CHECK(now.failed);
+    const BaselineComparison before = compareToBaseline(good, cells, 10.0);
+    BOOST_CHECK(before.failed);
 }

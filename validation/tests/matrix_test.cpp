@@ -130,6 +130,25 @@ BOOST_AUTO_TEST_CASE(bad_values_are_errors) {
     expectError(f, "- a\n- b\n", {f.path() + ":1:1", "must be a YAML map"});
 }
 
+BOOST_AUTO_TEST_CASE(a_region_every_scene_has_serves_scene_all) {
+    // Both scenes with a region 'shadow': one compare claim covers it in both; a region only one scene has is
+    // refused naming the scene that lacks it.
+    Fixture f;
+    std::string text =
+        replaced(good, "    height: 24\n", "    height: 24\n    regions: [{ name: shadow, rect: [0, 0.5, 1, 1] }]\n");
+    text = replaced(text, "name: veach }", "name: veach, regions: [{ name: shadow, rect: [0, 0, 0.5, 1] }] }");
+    const std::string claim = "  - { type: compare, region: shadow, patterns: [stratified, independent] }\n";
+    const Matrix m = parseMatrix(text + claim, f.path(), test::kVocabulary);
+    BOOST_REQUIRE_EQUAL(m.checks.size(), 5u);
+    BOOST_CHECK_EQUAL(m.checks[4].scene, "all");
+    BOOST_CHECK_EQUAL(m.checks[4].region, "shadow");
+    expectError(f,
+                replaced(text, "name: veach, regions: [{ name: shadow", "name: veach, regions: [{ name: floor") + claim,
+                {":17:", "region 'shadow' is not a region of every scene", "veach lack it"});
+    expectError(f, text + "  - { type: compare, scene: box, region: floor, patterns: [stratified, independent] }\n",
+                {":17:", "region must be 'image' or a region of the one scene named, got 'floor'"});
+}
+
 BOOST_AUTO_TEST_CASE(missing_file_is_named) {
     BOOST_CHECK_EXCEPTION(loadMatrix("no/such/matrix.yaml", test::kVocabulary), MatrixError, [](const MatrixError& e) {
         return std::string(e.what()).find("no/such/matrix.yaml") != std::string::npos;

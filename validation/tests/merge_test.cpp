@@ -5,6 +5,8 @@
 #define BOOST_TEST_MODULE validation_merge
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+
 #include <filesystem>
 #include <functional>
 #include <unistd.h>
@@ -32,6 +34,7 @@ struct Shards {
         matrix.spp = {4};
         matrix.seeds = {1, 2};
     }
+    std::string contentHash = "0123456789abcdef", integrator = "path";
     ~Shards() { fs::remove_all(dir); }
     // A shard folder holding the rows (pattern, seed) given.
     // `edit` changes each row after it is made as a measurement would make it.
@@ -46,6 +49,8 @@ struct Shards {
         SceneInfo info;
         info.name = "box";
         info.width = info.height = 16;
+        info.contentHash = contentHash;
+        info.integrator = integrator;
         r.scenes = {info};
         for (const auto& [pattern, seed] : rows) {
             ResultRow row;
@@ -57,6 +62,10 @@ struct Shards {
             row.rms = 0.5 + double(seed) / 8;
             row.mse = row.rms * row.rms;
             row.renderSeconds = 0.01;
+            // 16x16 is 2x2 blocks of 8x8 pixels: each block's squared error is a quarter of mse × 256 pixels.
+            row.blockSse.assign(4, row.mse * 64);
+            row.blockRse.assign(4, 0.25);
+            row.blockFlip.assign(4, 1.0);
             edit(row);
             r.rows.push_back(row);
         }
@@ -135,4 +144,38 @@ BOOST_AUTO_TEST_CASE(rows_no_measurement_gives_are_refused) {
             return mentions(e, a + "/results.json: box") && mentions(e, message);
         });
     }
+}
+
+BOOST_AUTO_TEST_CASE(shards_of_other_content_or_contradicting_blocks_are_refused) {
+    // The same matrix and build, but one shard's scene rendered by another program (its content hash differs): one
+    // run cannot average them.
+    {
+        Shards s;
+        const std::string a = s.shard("a", {{"independent", 1}, {"stratified", 1}});
+        s.contentHash = "fedcba9876543210";
+        s.integrator = "external: other_host";
+        const std::string b = s.shard("b", {{"independent", 2}, {"stratified", 2}});
+        BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error, [&](const auto& e) {
+            return mentions(e, b) && mentions(e, "rendered from other content") && mentions(e, "other_host");
+        });
+    }
+    // Per-block errors that are not the row's: the intervals of compare claims would come from other numbers.
+    Shards s;
+    const std::string a = s.shard("a", {{"independent", 1}, {"stratified", 1}});
+    const std::string scaled = s.shard("b", {{"independent", 2}, {"stratified", 2}}, "stipple-render 1", [](ResultRow& r) {
+        if (r.pattern == "stratified") r.blockSse = {0, 0, 0, 4 * r.mse * 64};
+        if (r.pattern == "independent") r.blockSse[0] *= 100;
+    });
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, scaled}, s.out()), std::runtime_error,
+                          [&](const auto& e) { return mentions(e, "block_sse sums to"); });
+    const std::string shortList = s.shard("c", {{"independent", 2}, {"stratified", 2}}, "stipple-render 1",
+                                          [](ResultRow& r) { r.blockRse.pop_back(); });
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, shortList}, s.out()), std::runtime_error,
+                          [&](const auto& e) { return mentions(e, "block_rse has 3 values"); });
+    const std::string nan = s.shard("d", {{"independent", 2}, {"stratified", 2}}, "stipple-render 1",
+                                    [](ResultRow& r) { r.blockFlip[1] = std::nan(""); });
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, nan}, s.out()), std::runtime_error,
+                          [&](const auto& e) { return mentions(e, "block_flip value"); });
+    const std::string good = s.shard("e", {{"independent", 2}, {"stratified", 2}});
+    BOOST_CHECK_EQUAL(mergeShards(s.matrix, {a, good}, s.out()).rows.size(), 4u);
 }

@@ -356,6 +356,8 @@ def main():
     html = open(os.path.join(people, "index.html")).read()
     check('id="perceptual-verdicts"' in html and 'id="figure-8"' in html,
           "the report's first screen has people's verdicts and Figure 8")
+    check('<span class="people">people: ' in html,
+          "the study table's perceptual column carries people's verdict beside mean FLIP's")
     check(all(os.path.exists(os.path.join(people, "plots", f"perceptual-set-{i + 1}.png")) for i in range(len(names))),
           "Figure 8's plots are written")
     for i, s in enumerate(key["sets"]):

@@ -65,6 +65,18 @@ if submit "$out" --tasks 2 --parsable > "$work/out.log" 2> "$work/err.log"; then
 else
   cat "$work/err.log"; fail "submit-matrix.sh refused an OUTDIR with special characters"
 fi
+# The renderer options reach every task (an external matrix's shards would otherwise skip every scene).
+rm -f "$FAKE_JOBS"/* && printf 'analytic_host\n{output}\n' > "$work/host.command" && touch "$work/host"
+if submit "$work/o-ext" --tasks 2 --renderer "$work/host" --renderer-command "$work/host.command" \
+     --renderer-timeout 30 > "$work/out.log" 2> "$work/err.log"; then
+  ( source "$FAKE_JOBS/1.env"; export FAKE_ARGV="$work/argv.ext" SLURM_ARRAY_TASK_ID=1; bash "$FAKE_JOBS/1.sh" )
+  tr '\n' ' ' < "$work/argv.ext" | grep -qF -- "--renderer-command $work/host.command --renderer $work/host --renderer-timeout 30" ||
+    fail "the task does not pass the renderer options: $(tr '\n' ' ' < "$work/argv.ext")"
+  echo "ok: --renderer, --renderer-command and --renderer-timeout reach the task"
+else
+  cat "$work/err.log"; fail "submit-matrix.sh refused the renderer options"
+fi
+rm -f "$FAKE_JOBS"/*
 expect "--indices beyond --tasks" 2 "--indices: task '5' .* not within 1..2" "${sub[@]}" --tasks 2 --indices 1,5
 expect "--tasks too large" 2 "--tasks: expected an integer in \[1, 10000\]" "${sub[@]}" --tasks 99999999999999999999999
 expect "--tasks without a value" 2 "--tasks needs a value" "${sub[@]}" --tasks
@@ -90,6 +102,9 @@ grep -q "CPU-hours" "$work/out.log" && fail "a table was printed from stale resu
 expect "--divisor 0" 2 "--divisor: expected an integer" "${est[@]}" "$work/cost.yaml" --bin "$validate" --divisor 0
 expect "--tasks 0" 2 "--tasks: expected an integer" "${est[@]}" "$work/cost.yaml" --bin "$validate" --tasks 0
 expect "missing matrix" 2 "cannot read the matrix" "${est[@]}" "$work/none.yaml" --bin "$validate"
+printf 'renderer: { command: [host, "{output}"] }\n' | cat "$work/cost.yaml" - > "$work/cost-external.yaml"
+expect "an external matrix" 2 "use an external renderer; estimate-cost samples stipple-render only" \
+  "${est[@]}" "$work/cost-external.yaml" --bin "$validate"
 sed 's/name: cornell,/name: "..\/..\/escape",/' "$work/cost.yaml" > "$work/escape.yaml"
 mkdir -p "$work/deep/er"
 timeout 120 python3 "$slurm/estimate-cost.py" "$work/escape.yaml" --bin "$validate" --work "$work/deep/er/est" \

@@ -22,6 +22,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace stipple::render {
@@ -66,10 +67,25 @@ extern "C" void onSignal(int sig) {
     errno = saved;
 }
 
+std::mutex& childGroupsMutex() {
+    static std::mutex m;
+    return m;
+}
+std::vector<int>& childGroups() {
+    static std::vector<int> groups;
+    return groups;
+}
+
 void cleanupThread() {
     unsigned char b = 0;
     while (read(signalPipe[0], &b, 1) < 0 && errno == EINTR) {}
     holdMutex().lock(); // never unlocked: a writer waiting for a SignalHold waits until the process ends
+    {
+        // Children first: they may still be writing into a temporary folder.
+        std::lock_guard lock(childGroupsMutex());
+        for (int g : childGroups()) ::kill(-g, SIGKILL);
+        for (int g : childGroups()) ::waitpid(g, nullptr, 0); // a zombie leader would keep its pid taken
+    }
     {
         std::lock_guard lock(registryMutex());
         // Files are written under a SignalHold, so none appears from here on. Writers that work without one (a
@@ -154,6 +170,16 @@ bool isTempName(const std::string& name) {
     std::string host;
     long pid = 0;
     return parseTempName(name, host, pid);
+}
+
+void registerChildGroup(int pgid) {
+    std::lock_guard lock(childGroupsMutex());
+    childGroups().push_back(pgid);
+}
+
+void unregisterChildGroup(int pgid) {
+    std::lock_guard lock(childGroupsMutex());
+    std::erase(childGroups(), pgid);
 }
 
 void installTempCleanupOnSignals() {

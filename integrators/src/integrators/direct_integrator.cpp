@@ -35,53 +35,102 @@ public:
         if (useBsdf) dir_ = layout.add("b0.bsdf.dir", 2, k_);
     }
 
-    Spectrum Li(const Ray& ray, const SampleView& sv, TileContext& tile) const override {
-        SurfaceHit hit;
-        ++tile.rays;
-        if (!scene_.intersect(ray, hit)) return {};
+    Spectrum Li(const Ray& ray, const TracedHit& first, const SampleView& sv, TileContext& tile) const override {
         Spectrum L;
-        if (hit.light >= 0) L += scene_.lights()[size_t(hit.light)].L(hit.ng, -ray.d);
-        if (maxDepth_ < 1) return L;
-        const Material& m = *hit.material;
-        Frame frame(hit.ng);
-        Vec3 wo = frame.toLocal(-ray.d);
-        float invK = 1.0f / float(k_);
-        // Specular surfaces: light sampling cannot hit a delta lobe, so BSDF samples carry weight 1.
-        bool lightTechnique = lightPos_ >= 0 && !m.isSpecular();
-        bool bsdfTechnique = dir_ >= 0;
-        for (uint32_t j = 0; j < k_ && lightTechnique; ++j) {
-            float pmf = 1;
-            size_t li = scene_.lights().size() == 1 ? 0 : scene_.lightChoice().sample(sv.get1D(lightChoice_, j), &pmf);
-            LightLiSample ls;
-            if (!scene_.lights()[li].sampleLi(hit.p, sv.get2D(lightPos_, j), ls)) continue;
-            Vec3 wi = frame.toLocal(ls.wi);
-            Spectrum f = m.f(wo, wi) * std::abs(wi.z);
-            if (f.isBlack()) continue;
-            ++tile.rays;
-            if (scene_.occludedBetween(hit.p, hit.ng, ls.p)) continue;
-            float pdfLight = pmf * ls.pdf;
-            float w = strategy_ == DirectStrategy::Mis ? powerHeuristic(pdfLight, m.pdf(wo, wi)) : 1.0f;
-            L += f * ls.L * (w * invK / pdfLight);
-        }
-        for (uint32_t j = 0; j < k_ && bsdfTechnique; ++j) {
-            BsdfSample bs;
-            if (!m.sample(wo, sv.get1D(lobe_, j), sv.get2D(dir_, j), bs)) continue;
-            Vec3 wi = frame.toWorld(bs.wi);
-            Ray r{offsetRayOrigin(hit.p, hit.ng, wi), wi};
-            SurfaceHit lightHit;
-            ++tile.rays;
-            if (!scene_.intersect(r, lightHit) || lightHit.light < 0) continue;
-            const Light& light = scene_.lights()[size_t(lightHit.light)];
-            Spectrum Le = light.L(lightHit.ng, -wi);
-            if (Le.isBlack()) continue;
-            float w = 1;
-            if (strategy_ == DirectStrategy::Mis && !bs.isSpecular() && lightPos_ >= 0) {
-                float pdfLight = scene_.lightChoicePmf(lightHit.light) * light.pdfLi(hit.p, lightHit.p, lightHit.ng);
-                w = powerHeuristic(bs.pdf, pdfLight);
-            }
-            L += bs.f * Le * (std::abs(bs.wi.z) * w * invK / bs.pdf);
-        }
+        LiPacket(&ray, &first, sv.pixel(), sv.sampleIndex(), 1, tile, &L);
         return L;
+    }
+
+    // A pixel's samples go through each technique together: their shadow rays (toward the lights) and BSDF rays
+    // leave one small patch of surface, so each technique's rays are traced as one packet. Every sample's
+    // arithmetic and the order of its terms are Li's for that sample alone.
+    void LiPacket(const Ray* rays, const TracedHit* firsts, const PixelSamples& samples, uint32_t firstSample,
+                  int count, TileContext& tile, Spectrum* L) const override {
+        constexpr int P = RenderScene::kPacketSize;
+        Frame frames[P];
+        Vec3 wo[P];
+        bool shaded[P];
+        for (int k = 0; k < count; ++k) {
+            L[k] = Spectrum();
+            shaded[k] = false;
+            if (!firsts[k].found) continue;
+            const SurfaceHit& hit = firsts[k].hit;
+            if (hit.light >= 0) L[k] += scene_.lights()[size_t(hit.light)].L(hit.ng, -rays[k].d);
+            if (maxDepth_ < 1) continue;
+            shaded[k] = true;
+            frames[k] = Frame(hit.ng);
+            wo[k] = frames[k].toLocal(-rays[k].d);
+        }
+        const float invK = 1.0f / float(k_);
+        Ray next[P];
+        int lane[P];
+        Spectrum term[P];
+        // Light sampling; specular surfaces are left to BSDF sampling (a light sample cannot hit a delta lobe).
+        for (uint32_t j = 0; j < k_ && lightPos_ >= 0; ++j) {
+            int n = 0;
+            for (int k = 0; k < count; ++k) {
+                if (!shaded[k] || firsts[k].hit.material->isSpecular()) continue;
+                const SurfaceHit& hit = firsts[k].hit;
+                const Material& m = *hit.material;
+                const SampleView sv(samples, firstSample + uint32_t(k));
+                float pmf = 1;
+                size_t li =
+                    scene_.lights().size() == 1 ? 0 : scene_.lightChoice().sample(sv.get1D(lightChoice_, j), &pmf);
+                LightLiSample ls;
+                if (!scene_.lights()[li].sampleLi(hit.p, sv.get2D(lightPos_, j), ls)) continue;
+                Vec3 wi = frames[k].toLocal(ls.wi);
+                Spectrum f = m.f(wo[k], wi) * std::abs(wi.z);
+                if (f.isBlack()) continue;
+                ++tile.rays;
+                float pdfLight = pmf * ls.pdf;
+                float w = strategy_ == DirectStrategy::Mis ? powerHeuristic(pdfLight, m.pdf(wo[k], wi)) : 1.0f;
+                Spectrum value = f * ls.L * (w * invK / pdfLight);
+                if (!RenderScene::shadowRay(hit.p, hit.ng, ls.p, next[n])) {
+                    L[k] += value; // nothing between coincident points
+                    continue;
+                }
+                lane[n] = k;
+                term[n++] = value;
+            }
+            bool blocked[P];
+            scene_.occludedPacket(next, n, blocked);
+            for (int i = 0; i < n; ++i)
+                if (!blocked[i]) L[lane[i]] += term[i];
+        }
+        // BSDF sampling.
+        BsdfSample bsdf[P];
+        for (uint32_t j = 0; j < k_ && dir_ >= 0; ++j) {
+            int n = 0;
+            for (int k = 0; k < count; ++k) {
+                if (!shaded[k]) continue;
+                const SurfaceHit& hit = firsts[k].hit;
+                const SampleView sv(samples, firstSample + uint32_t(k));
+                BsdfSample& bs = bsdf[n];
+                if (!hit.material->sample(wo[k], sv.get1D(lobe_, j), sv.get2D(dir_, j), bs)) continue;
+                Vec3 wi = frames[k].toWorld(bs.wi);
+                next[n] = Ray{offsetRayOrigin(hit.p, hit.ng, wi), wi};
+                ++tile.rays;
+                lane[n++] = k;
+            }
+            TracedHit found[P];
+            scene_.intersectPacket(next, n, found);
+            for (int i = 0; i < n; ++i) {
+                const SurfaceHit& lightHit = found[i].hit;
+                if (!found[i].found || lightHit.light < 0) continue;
+                const SurfaceHit& hit = firsts[lane[i]].hit;
+                const BsdfSample& bs = bsdf[i];
+                const Light& light = scene_.lights()[size_t(lightHit.light)];
+                Spectrum Le = light.L(lightHit.ng, -next[i].d);
+                if (Le.isBlack()) continue;
+                float w = 1;
+                if (strategy_ == DirectStrategy::Mis && !bs.isSpecular() && lightPos_ >= 0) {
+                    float pdfLight =
+                        scene_.lightChoicePmf(lightHit.light) * light.pdfLi(hit.p, lightHit.p, lightHit.ng);
+                    w = powerHeuristic(bs.pdf, pdfLight);
+                }
+                L[lane[i]] += bs.f * Le * (std::abs(bs.wi.z) * w * invK / bs.pdf);
+            }
+        }
     }
 
 private:

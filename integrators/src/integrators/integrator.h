@@ -2,7 +2,7 @@
 // Copyright 2026 The stipple authors
 // The integrator interface. The render loop (renderer.cpp) declares "pixel" (and "lens" for a thin-lens camera),
 // asks the integrator to declare the rest, creates the shim sampler, then calls Li once per camera sample from
-// the thread that owns the pixel's tile.
+// the thread that owns the pixel's tile with the camera ray's closest hit already found.
 //
 // Adding an integrator: implement Integrator in src/integrators/<name>_integrator.cpp, list the file in
 // integrators/CMakeLists.txt, declare its factory in integrator_registry.h and add it to the table in
@@ -38,8 +38,17 @@ public:
     virtual const char* name() const = 0;
     // Appends the dimensions this integrator reads (after "pixel"/"lens"), remembering their indices.
     virtual void declareDimensions(SampleLayout& layout) = 0;
-    // Radiance along a camera ray for one camera sample. Light-tracing contributions go to tile.splats.
-    virtual Spectrum Li(const Ray& ray, const SampleView& samples, TileContext& tile) const = 0;
+    // Radiance along a camera ray for one camera sample, given the ray's closest hit (the render loop traces a
+    // pixel's camera rays in packets and counts them). Light-tracing contributions go to tile.splats.
+    virtual Spectrum Li(const Ray& ray, const TracedHit& first, const SampleView& samples, TileContext& tile) const = 0;
+    // The radiance of `count` (<= RenderScene::kPacketSize) consecutive camera samples of one pixel, from sample
+    // index firstSample on: what Li returns for each. An integrator whose next rays stay coherent within a pixel
+    // traces them in packets here; the default calls Li in sample order.
+    virtual void LiPacket(const Ray* rays, const TracedHit* firsts, const PixelSamples& samples, uint32_t firstSample,
+                          int count, TileContext& tile, Spectrum* L) const {
+        for (int k = 0; k < count; ++k)
+            L[k] = Li(rays[k], firsts[k], SampleView(samples, firstSample + uint32_t(k)), tile);
+    }
 };
 
 // "path", "direct", "direct-light" (light sampling only), "direct-bsdf" (BSDF sampling only), "bdpt" when built.

@@ -40,16 +40,19 @@ public:
         }
     }
 
-    Spectrum Li(const Ray& cameraRay, const SampleView& sv, TileContext& tile) const override {
+    Spectrum Li(const Ray& cameraRay, const TracedHit& first, const SampleView& sv, TileContext& tile) const override {
         Spectrum L, beta(1.0f);
         Ray ray = cameraRay;
         bool specularBounce = false;
         float prevPdf = 0;
         Vec3 prevP;
+        if (!first.found) return L;
+        SurfaceHit hit = first.hit;
         for (int depth = 0;; ++depth) {
-            SurfaceHit hit;
-            ++tile.rays;
-            if (!scene_.intersect(ray, hit)) break;
+            if (depth > 0) {
+                ++tile.rays;
+                if (!scene_.intersect(ray, hit)) break;
+            }
             if (hit.light >= 0) {
                 const Light& light = scene_.lights()[size_t(hit.light)];
                 Spectrum Le = light.L(hit.ng, -ray.d);

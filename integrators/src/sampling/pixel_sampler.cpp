@@ -69,6 +69,8 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
 void PixelSampler::startPixel(uint32_t x, uint32_t y, PixelSamples& out) const {
     out.x_ = x;
     out.y_ = y;
+    out.timed_ = out.pixels_++ % PixelSamples::kTimedEvery == 0;
+    out.pixelsTimed_ += out.timed_;
     std::fill(out.held_.begin(), out.held_.end(), uint8_t(0));
 }
 
@@ -92,10 +94,16 @@ PixelSamples::PixelSamples(const PixelSampler& sampler) : sampler_(&sampler) {
 }
 
 void PixelSamples::fetchPixel(uint32_t dim) const {
-    const auto start = std::chrono::steady_clock::now();
-    sampler_->drawPixel(x_, y_, dim, &pixelValues_[pixelOffset_[dim]], pixelOffset_[dim + 1] - pixelOffset_[dim]);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    samplerSeconds += std::max(0.0, elapsed - sampler_->clockSeconds_);
+    float* out = &pixelValues_[pixelOffset_[dim]];
+    const size_t count = pixelOffset_[dim + 1] - pixelOffset_[dim];
+    if (timed_) {
+        const auto start = std::chrono::steady_clock::now();
+        sampler_->drawPixel(x_, y_, dim, out, count);
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        timedSeconds_ += std::max(0.0, elapsed - sampler_->clockSeconds_);
+    } else {
+        sampler_->drawPixel(x_, y_, dim, out, count);
+    }
     held_[dim] = 1;
 }
 

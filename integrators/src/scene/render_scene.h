@@ -24,6 +24,12 @@ struct SurfaceHit {
     int light = -1; // index into RenderScene::lights(), -1 when the surface does not emit
 };
 
+// A ray's closest hit as a packet query returns it: `found` false when the ray leaves the scene.
+struct TracedHit {
+    bool found = false;
+    SurfaceHit hit;
+};
+
 class RenderScene {
 public:
     // Builds every Embree scene and commits it (timed: buildSeconds). Throws std::runtime_error on Embree errors.
@@ -38,6 +44,15 @@ public:
 
     // Closest hit along ray within (0, ray.tMax). Sets the FTZ/DAZ-independent results only.
     bool intersect(const Ray& ray, SurfaceHit& hit) const;
+    // Closest hits of up to kPacketSize rays that start together (one pixel's camera rays) in one packet query:
+    // the same hits as intersect() on each ray, found by traversing the BVH once for the bundle (one ray at a
+    // time in scenes with instances, where Embree's packet hits are not bitwise its single-ray hits).
+    static constexpr int kPacketSize = 16;
+    void intersectPacket(const Ray* rays, int count, TracedHit* hits) const;
+    // Whether each of up to kPacketSize rays (tMax set) is blocked, in one packet query (one at a time with instances).
+    void occludedPacket(const Ray* rays, int count, bool* blocked) const;
+    // The shadow ray occludedBetween traces: false when there is none to trace (the points coincide).
+    static bool shadowRay(const Vec3& p, const Vec3& ng, const Vec3& target, Ray& ray);
     // Any hit along ray within (0, tMax).
     bool occluded(const Ray& ray) const;
     // Shadow ray between a surface point (normal ng) and a light point; true when something lies between.
@@ -70,7 +85,9 @@ private:
     void buildGroup(Group& group, const ShapeGroup& shapes, bool topLevel);
     void addLightsOf(const ShapeGroup& shapes, const Transform* toWorld, std::vector<int>& lightOfGeom,
                      const std::string& where);
-    void resolveHit(const RTCRayHit& rh, const Ray& ray, SurfaceHit& hit) const;
+    // The hit record's primitive as a surface point; hitT/u/v/ids as Embree returned them.
+    void resolveHit(unsigned instID, unsigned geomID, unsigned primID, float hitT, float u, float v, const Ray& ray,
+                    SurfaceHit& hit) const;
 
     SceneDescription desc_;
     RTCDevice device_ = nullptr;
@@ -78,6 +95,9 @@ private:
     std::vector<Group> objects_;
     std::vector<InstanceRecord> instances_;
     std::vector<std::vector<float>> vertexBuffers_; // padded by one float (Embree reads 16 bytes)
+    // Per top-level mesh, per triangle: the unit geometric normal, computed once at build time exactly as a hit
+    // would compute it (instanced meshes transform the unnormalized cross product instead, so they have none).
+    std::vector<std::vector<Vec3>> topMeshNormals_;
     std::vector<Light> lights_;
     DiscreteDistribution lightChoice_;
     double buildSeconds_ = 0;

@@ -581,9 +581,13 @@ private:
         return refill(streams_[Arity - 1][index], streamValues_[Arity - 1][index], false, index, Arity, 0);
     }
     STIPPLE_HPP_NOINLINE const float* fetchArray(uint32_t index, uint32_t arity, uint32_t k) {
-        // Shapes the library refuses (arity outside 1..3, k outside 1..STIPPLE_MAX_VALUES_PER_SAMPLE) go straight to
-        // it for its message, with no buffer sized by them; so do indices past the cache.
+        // Shapes the library refuses (arity outside 1..3, k outside 1..STIPPLE_MAX_VALUES_PER_SAMPLE, k * N past
+        // STIPPLE_MAX_SET_SIZE) go straight to it for its message, with no buffer sized by the window: every limit
+        // is checked before anything is sized, so a status form never meets std::bad_alloc from a bad shape (which
+        // a -fno-exceptions host could only abort on). So do indices past the cache.
         if (arity - 1 >= 3 || k - 1 >= STIPPLE_MAX_VALUES_PER_SAMPLE) return direct(true, index, arity, k, 3);
+        const uint64_t n = sampler_->samplesPerPixel() ? sampler_->samplesPerPixel() : 1;
+        if (uint64_t(k) * n > STIPPLE_MAX_SET_SIZE) return direct(true, index, arity, k, size_t(k) * arity);
         if (index >= kMaxCachedIndex) return direct(true, index, arity, k, size_t(k) * arity);
         if (index >= arrayCount_[arity - 1])
             grow(arrays_[arity - 1], arrayValues_[arity - 1], arrayCount_[arity - 1], index);

@@ -15,36 +15,18 @@ namespace stipple::detail::pointsets {
 // input: the generators return an empty vector rather than attempt gigabytes of grid.
 inline constexpr uint32_t kMaxPoints = 1u << 22;
 
-// Exactly n points in [0,1)^dim (dim 1..3), interleaved, toroidal domain. Deterministic in seed.
-// High quality (see shim/POINTSETS.md): rho >= 0.855 in 2D (0.835 in 3D), every 1D projection stratified (one
-// point per 1/n) and the lowest Fourier modes cancelled, from a jittered start and relaxation; order shuffled.
+// "poisson": exactly n points in [0,1)^dim (dim 1..3), interleaved, toroidal domain, in random order.
+// Deterministic in seed. 2D and 3D (poisson.cpp): dart throwing at the fixed radius poissonRadius(dim) d_max until
+// n points are accepted (near-maximal Poisson-disk sets: rho >= poissonRadius(dim) except where a tiny torus
+// cannot hold n such disks). 1D: generateCellSet1D.
 std::vector<float> generatePoisson(int dim, uint32_t n, uint64_t seed);
+// The minimum distance over d_max the generator keeps: 0.2 (1D), 0.76 (2D), 0.72 (3D).
+double poissonRadius(int dim);
 
-// 1D sets (cell_set_1d.cpp): one point in each cell [c/n, (c+1)/n), at the centre of one of the cell's m sub-cells
-// (m = cellSubdivision1D(n): the largest divisor of n with n * m <= 2^23, m = n for 8 <= n <= 2896, or 1 if that is
-// below 8, the equidistant lattice), the sub-cell index stepping by q = cellStep1D(n, setIndex) modulo n from
-// cell to cell. From 64 points on q / n ~ 0.809 in every set; below, each n mixes up to three steps over a
-// family's 32 sets (set setIndex mod 32), every one q = 0 or q / n >= 1/2, so that two neighbours stay at least
-// half a cell apart under the serving's common rotation (pattern_poisson.cpp relies on this layout). Order
-// shuffled. generatePoisson(1, n, seed) is set 0.
-uint32_t cellSubdivision1D(uint32_t n);
-uint32_t cellStep1D(uint32_t n, uint32_t setIndex);
-std::vector<float> generateCellSet1D(uint32_t n, uint32_t setIndex, uint64_t seed);
-
-// 2D and 3D sets aligned with the domain (cell_lattice.cpp): a grid of cells(0) x cells(1) [x cells(2)] = n cells,
-// one point per cell at the offset frac(A c) for an integer-over-grid matrix A chosen so that the set keeps
-// rho >= cellLatticeRhoFloor(dim) under every common within-cell shift (how pattern_poisson.cpp serves it). Points
-// in cell order (cell index x-fastest). Empty points if no grid with sides at most 2.5:1 and 16 cells a side
-// qualifies, or n > 2^16 (the search's cost grows with n); then the toroidal generatePoisson set is served.
-// Deterministic in seed.
-struct CellLattice {
-    std::vector<float> points;
-    uint32_t cells[3] = {0, 0, 0};
-    double rho = 0.0;    // the worst case over within-cell shifts (before the face margin: at most 0.003 less)
-    uint32_t shared = 0; // cells that share each offset value along the worst axis (1: all n different)
-};
-CellLattice generateCellLattice(int dim, uint32_t n, uint64_t seed);
-double cellLatticeRhoFloor(int dim);
+// 1D sets (cell_set_1d.cpp): one point in each cell [c/n, (c+1)/n), at least n 2^-23 cells inside it, its offset
+// a reflecting random walk of steps uniform on [-0.8, 0.8] (every offset uniform, neighbours at least 0.2 cells
+// apart, the last cell's step to the first included). Order shuffled.
+std::vector<float> generateCellSet1D(uint32_t n, uint64_t seed);
 
 // The study's Algorithm 1: dart throwing with r0 = N^(-1/dim), r <- 0.75 r after TRY_LIMIT = 100
 // consecutive failures, neighbour search in an ordered set (1D), quadtree (2D) or octree (3D).

@@ -1,67 +1,113 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
-// spectrum.cpp — see spectrum.h. O(N K^2) per set with per-point phase tables; P(-k) = P(k) halves it.
+// spectrum.cpp — see spectrum.h. O(N F) per set for F kept frequencies, from per-point phase tables per axis.
 #include "spectrum.h"
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 
 namespace stipple::detail::pointsets {
 
-PowerSpectrum2D::PowerSpectrum2D(int maxFrequency)
-    : K_(std::max(1, maxFrequency)), W_(2 * K_ + 1), sum_(size_t(W_) * W_, 0.0) {}
+PowerSpectrum::PowerSpectrum(int dim, int maxFrequency, int annulusWidth)
+    : dim_(dim), K_(maxFrequency), width_(std::max(1, annulusWidth)) {
+    const int K = K_, ky = dim >= 2 ? K : 0, kz = dim >= 3 ? K : 0;
+    for (int z = -kz; z <= kz; ++z)
+        for (int y = -ky; y <= ky; ++y)
+            for (int x = -K; x <= K; ++x) {
+                // The half space: the first nonzero coordinate from the last axis down is positive.
+                const bool positive = z > 0 || (z == 0 && (y > 0 || (y == 0 && x > 0)));
+                const long r2 = long(x) * x + long(y) * y + long(z) * z;
+                if (!positive || r2 > long(K) * K) continue;
+                const int k[3] = {x, y, z};
+                frequencies_.insert(frequencies_.end(), k, k + dim);
+                radius_.push_back(int(std::lround(std::sqrt(double(r2)) / width_)));
+            }
+    sum_.assign(radius_.size(), 0.0);
+}
 
-void PowerSpectrum2D::add(const float* points, uint32_t n) {
-    if (n == 0 || points == nullptr) return;
-    using C = std::complex<double>;
-    const double twoPi = 6.283185307179586;
-    // Phase tables e^{-2 pi i k x} for k = -K..K, per point.
-    std::vector<C> ex(size_t(n) * W_), ey(size_t(n) * W_);
-    for (uint32_t i = 0; i < n; ++i)
-        for (int k = -K_; k <= K_; ++k) {
-            ex[size_t(i) * W_ + (k + K_)] = std::polar(1.0, -twoPi * k * double(points[2 * size_t(i)]));
-            ey[size_t(i) * W_ + (k + K_)] = std::polar(1.0, -twoPi * k * double(points[2 * size_t(i) + 1]));
+void PowerSpectrum::add(const float* points, uint32_t n) {
+    const int W = 2 * K_ + 1;
+    std::vector<std::complex<double>> phase(size_t(dim_) * W); // exp(-2 pi i k x) per axis, k = -K..K
+    std::vector<std::complex<double>> sum(radius_.size());
+    const double twoPi = 2.0 * std::acos(-1.0);
+    for (uint32_t i = 0; i < n; ++i) {
+        for (int c = 0; c < dim_; ++c) {
+            const std::complex<double> step = std::polar(1.0, -twoPi * double(points[size_t(i) * dim_ + c]));
+            std::complex<double>* row = phase.data() + size_t(c) * W;
+            row[K_] = 1.0;
+            for (int k = 1; k <= K_; ++k) {
+                // Renormalised every step so that the recurrence does not drift at large K.
+                row[K_ + k] = row[K_ + k - 1] * step;
+                row[K_ + k] /= std::abs(row[K_ + k]);
+                row[K_ - k] = std::conj(row[K_ + k]);
+            }
         }
-    // Half plane ky >= 0 (and kx >= 0 on ky = 0), mirrored.
-    for (int ky = 0; ky <= K_; ++ky)
-        for (int kx = ky == 0 ? 0 : -K_; kx <= K_; ++kx) {
-            C s = 0.0;
-            for (uint32_t i = 0; i < n; ++i) s += ex[size_t(i) * W_ + (kx + K_)] * ey[size_t(i) * W_ + (ky + K_)];
-            double p = std::norm(s) / double(n);
-            sum_[size_t(ky + K_) * W_ + (kx + K_)] += p;
-            if (kx != 0 || ky != 0) sum_[size_t(-ky + K_) * W_ + (-kx + K_)] += p;
+        const int* k = frequencies_.data();
+        for (size_t f = 0; f < sum.size(); ++f, k += dim_) {
+            std::complex<double> e = phase[size_t(K_ + k[0])];
+            for (int c = 1; c < dim_; ++c) e *= phase[size_t(c) * W + size_t(K_ + k[c])];
+            sum[f] += e;
         }
+    }
+    for (size_t f = 0; f < sum.size(); ++f) sum_[f] += std::norm(sum[f]) / n;
     ++sets_;
 }
 
-double PowerSpectrum2D::at(int kx, int ky) const {
-    if (sets_ == 0 || std::abs(kx) > K_ || std::abs(ky) > K_) return 0.0;
-    return sum_[size_t(ky + K_) * W_ + (kx + K_)] / sets_;
-}
-
-std::vector<PowerSpectrum2D::Ring> PowerSpectrum2D::rings(bool skipAxes) const {
-    std::vector<double> s(K_ + 1, 0.0), s2(K_ + 1, 0.0), r(K_ + 1, 0.0);
-    std::vector<int> c(K_ + 1, 0);
-    for (int ky = -K_; ky <= K_; ++ky)
-        for (int kx = -K_; kx <= K_; ++kx) {
-            double radius = std::hypot(double(kx), double(ky));
-            int ring = int(std::lround(radius));
-            if (ring < 1 || ring > K_ || (skipAxes && (kx == 0 || ky == 0))) continue;
-            double p = at(kx, ky);
-            s[ring] += p;
-            s2[ring] += p * p;
-            r[ring] += radius;
-            ++c[ring];
-        }
-    std::vector<Ring> out;
-    for (int ring = 1; ring <= K_; ++ring) {
-        if (c[ring] == 0) continue;
-        double mean = s[ring] / c[ring], var = std::max(0.0, s2[ring] / c[ring] - mean * mean);
-        double aniso = mean > 0.0 && var > 0.0 ? 10.0 * std::log10(var / (mean * mean)) : -99.0;
-        out.push_back({r[ring] / c[ring], mean, aniso, c[ring]});
+std::vector<PowerSpectrum::Annulus> PowerSpectrum::annuli() const {
+    const int annuli = K_ / width_ + 1;
+    std::vector<double> s(size_t(annuli) + 1, 0.0), s2(size_t(annuli) + 1, 0.0);
+    std::vector<int> count(size_t(annuli) + 1, 0);
+    for (size_t f = 0; f < sum_.size(); ++f) {
+        const double p = sum_[f] / std::max(sets_, 1);
+        s[size_t(radius_[f])] += p;
+        s2[size_t(radius_[f])] += p * p;
+        ++count[size_t(radius_[f])];
+    }
+    std::vector<Annulus> out;
+    for (int r = 1; r <= annuli; ++r) {
+        if (count[size_t(r)] == 0) continue;
+        const double mean = s[size_t(r)] / count[size_t(r)];
+        const double variance = std::max(0.0, s2[size_t(r)] / count[size_t(r)] - mean * mean);
+        const double anisotropy = count[size_t(r)] > 1 && mean > 0 && variance > 0
+                                      ? 10.0 * std::log10(variance / (mean * mean))
+                                      : std::numeric_limits<double>::quiet_NaN();
+        out.push_back({r * width_, mean, anisotropy, count[size_t(r)]});
     }
     return out;
 }
 
+double PowerSpectrum::medianAnisotropy() const {
+    std::vector<double> values;
+    if (dim_ == 1) return std::numeric_limits<double>::quiet_NaN(); // an annulus of a line holds no directions
+    for (const Annulus& a : annuli())
+        if (a.count >= 8 && !std::isnan(a.anisotropy)) values.push_back(a.anisotropy);
+    if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::sort(values.begin(), values.end());
+    const size_t h = values.size() / 2;
+    return values.size() % 2 ? values[h] : 0.5 * (values[h - 1] + values[h]);
+}
+
+double PowerSpectrum::rapsPeak() const {
+    double best = 0.0;
+    for (const Annulus& a : annuli()) best = std::max(best, a.mean);
+    return best;
+}
+
+double PowerSpectrum::largestPeak() const {
+    double best = 0.0;
+    for (double v : sum_) best = std::max(best, v / std::max(sets_, 1));
+    return best;
+}
+
+} // namespace stipple::detail::pointsets
+
+namespace stipple::detail::pointsets {
+double PowerSpectrum::largestPeakRadius() const {
+    const size_t f = size_t(std::max_element(sum_.begin(), sum_.end()) - sum_.begin());
+    double r2 = 0;
+    for (int c = 0; c < dim_; ++c) r2 += double(frequencies_[f * size_t(dim_) + size_t(c)]) * frequencies_[f * size_t(dim_) + size_t(c)];
+    return std::sqrt(r2);
+}
 } // namespace stipple::detail::pointsets

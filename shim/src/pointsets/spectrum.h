@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
-// spectrum.h — the periodogram of 2D toroidal point sets: the isotropy check of the Poisson sets.
+// spectrum.h — the averaged periodogram of toroidal point sets in 1 to 3 dimensions, the field's measures of a
+// Poisson-disk set (Lagae & Dutre 2008; Heck et al. 2013).
 //
 // On the unit torus the Fourier series of a point set is exact at integer frequencies k:
-//   P(k) = |sum_i exp(-2 pi i k.x_i)|^2 / N,  P = 1 for white noise, P(0) = N.
-// Averaged over sets, its radial mean is the "radial power spectrum" and the variance over a ring
-// divided by the squared mean is PSA's anisotropy (in dB; an isotropic spectrum averaged over M sets sits
-// at the noise floor 10 log10(1/M)). Used by the tests and by shim/tools, not by the library's API.
+//   P(k) = |sum_i exp(-2 pi i k.x_i)|^2 / N,  E P = 1 for white noise, P(0) = N.
+// Averaged over M sets: the radially averaged power spectrum (mean over the annulus of unit width round each integer
+// radius), the anisotropy (10 log10(variance / mean^2) over an annulus, in dB; white noise averaged over M sets sits
+// near 10 log10(1/M)), and the largest value of the averaged periodogram (a peak: white noise's largest value is
+// about 1 + 4.5 / sqrt(M) over the thousands of frequencies). Used by the tests and shim_spectrum, not by the API.
 #pragma once
 
 #include <cstdint>
@@ -14,32 +16,40 @@
 
 namespace stipple::detail::pointsets {
 
-class PowerSpectrum2D {
+class PowerSpectrum {
 public:
-    explicit PowerSpectrum2D(int maxFrequency);
+    // Frequencies 0 < |k| <= maxFrequency (half of them: P(-k) = P(k)), in annuli of width annulusWidth round the
+    // multiples of it (1D has one frequency per |k|: wider annuli smooth its radial spectrum).
+    PowerSpectrum(int dim, int maxFrequency, int annulusWidth = 1);
 
-    // Adds one set's periodogram (n points, interleaved x,y).
+    // Adds one set's periodogram (n points, dim floats each, interleaved).
     void add(const float* points, uint32_t n);
 
+    int dim() const { return dim_; }
     int maxFrequency() const { return K_; }
     int sets() const { return sets_; }
-    // Mean periodogram over the sets added, at integer frequency (kx, ky), |kx|,|ky| <= K.
-    double at(int kx, int ky) const;
 
-    struct Ring {
-        double radius;     // mean |k| of the ring (integer frequencies)
+    struct Annulus {
+        int radius;        // the radius the annulus is centred on (a multiple of the width)
         double mean;       // radially averaged power
-        double anisotropy; // 10 log10(variance / mean^2) over the ring, in dB
-        int count;
+        double anisotropy; // 10 log10(variance / mean^2) over the annulus, dB (0 values: not set)
+        int count;         // frequencies in the annulus (of the half kept)
     };
-    // Rings of unit width centred on integer radii 1..K. skipAxes leaves out the frequencies on the axes
-    // (kx = 0 or ky = 0), which sets with stratified 1D projections empty on purpose.
-    std::vector<Ring> rings(bool skipAxes = false) const;
+    std::vector<Annulus> annuli() const;
+    // Median of the annuli's anisotropy over those with at least 8 frequencies (none, or 1D: NaN).
+    double medianAnisotropy() const;
+    // Largest radially averaged power over the annuli (the RAPS' peak).
+    double rapsPeak() const;
+    // Largest value of the averaged periodogram over 0 < |k| <= maxFrequency, and its |k|.
+    double largestPeak() const;
+    double largestPeakRadius() const;
 
 private:
-    int K_, W_;
+    int dim_, K_, width_;
     int sets_ = 0;
-    std::vector<double> sum_; // (2K+1)^2, row ky, column kx
+    std::vector<int> frequencies_; // dim ints per kept frequency
+    std::vector<int> radius_;      // its annulus
+    std::vector<double> sum_;      // summed periodogram per kept frequency
 };
 
 } // namespace stipple::detail::pointsets

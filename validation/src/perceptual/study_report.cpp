@@ -158,6 +158,49 @@ std::string studyFigureHtml(const StudyKey& key, const StudyAnalysis& a, const s
     return o.str();
 }
 
+std::string withPeopleVerdict(const std::string& cell, const ReportInputs& in, const std::string& scene,
+                              const std::string& region, const std::string& p, const std::string& q) {
+    if (in.studyDir.empty() || region.empty() || cell.size() < 5 || !cell.ends_with("</td>")) return cell;
+    // One analysis per study folder and report (the table asks once per cell).
+    struct Cached {
+        std::string dir;
+        StudyKey key;
+        StudyAnalysis analysis;
+        bool ok = false;
+    };
+    static Cached cache;
+    if (cache.dir != in.studyDir) {
+        cache = Cached{};
+        cache.dir = in.studyDir;
+        try {
+            cache.key = loadStudyKey(in.studyDir);
+            cache.analysis = analyseStudy(cache.key, loadVotes({(fs::path(in.studyDir) / kStudyVotesDir).string()}, cache.key));
+            cache.ok = true;
+        } catch (const std::exception&) {
+            // perceptualStudyHtml names the error; the cell stays FLIP's
+        }
+    }
+    if (!cache.ok) return cell;
+    for (size_t si = 0; si < cache.key.sets.size(); ++si) {
+        const StudySet& set = cache.key.sets[si];
+        if (set.scene != scene || set.region != region) continue;
+        for (const auto& v : cache.analysis.sets[si].pairs) {
+            const std::string &a = set.crops[v.a].pattern, &b = set.crops[v.b].pattern;
+            if (!((a == p && b == q) || (a == q && b == p))) continue;
+            const double sign = a == p ? 1 : -1; // oriented A = p: a positive difference prefers A
+            const double d = sign * v.difference, lo = sign > 0 ? v.lo95 : -v.hi95, hi = sign > 0 ? v.hi95 : -v.lo95;
+            std::string word = pairVerdictName(v.verdict);
+            if (v.verdict == PairVerdictKind::PreferredA || v.verdict == PairVerdictKind::PreferredB)
+                word = ((v.verdict == PairVerdictKind::PreferredA) == (a == p) ? p : q) + " PREFERRED";
+            return cell.substr(0, cell.size() - 5) +
+                   fmt("<br><span class=\"people\">people: %+.2f JOD <small>(%+.2f – %+.2f)</small> <strong>%s</strong> "
+                       "<small>%d observers, <a href=\"#perceptual\">%u spp</a></small></span></td>",
+                       d, lo, hi, html(word).c_str(), v.observers, set.spp);
+        }
+    }
+    return cell;
+}
+
 std::string perceptualStudyHtml(const ReportInputs& in) {
     if (!in.matrix || in.matrix->perceptual.sets.empty()) return "";
     std::ostringstream o;

@@ -15,6 +15,11 @@ namespace stipple::validation {
 // to the experiment folder. Plots go to <in.reportDir>/plots.
 std::string perceptualStudyHtml(const ReportInputs& in);
 
+// A first-screen perceptual cell ("<td ...>...</td>") with people's verdict on (A = p, B = q) added where
+// in.studyDir's votes have a set of that scene and region holding both patterns; else the cell unchanged.
+std::string withPeopleVerdict(const std::string& cell, const ReportInputs& in, const std::string& scene,
+                              const std::string& region, const std::string& p, const std::string& q);
+
 // The verdict table and Figure 8 with plots under `plotsDir` (linked as `plotsHref`/...). Returns the HTML.
 std::string studyFigureHtml(const StudyKey& key, const StudyAnalysis& a, const std::string& plotsDir,
                             const std::string& plotsHref);

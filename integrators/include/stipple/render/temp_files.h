@@ -21,6 +21,11 @@ bool isTempName(const std::string& name);
 // thread does the removal, so folders are removed whole. Idempotent.
 void installTempCleanupOnSignals();
 
+// A child's process group (its leader's pid) that the signal cleanup kills (SIGKILL) and reaps before it removes the
+// temporaries: a program the process started, with its own children, does not outlive an interrupted run.
+void registerChildGroup(int pgid);
+void unregisterChildGroup(int pgid);
+
 // Removes temporaries in `dir` (not recursive) whose process has ended: same host and no such pid, or older
 // than a day from another host. Returns how many were removed. A missing folder is not an error.
 // Only what this process could have written is touched: a name of the pattern above, owned by the effective

@@ -100,10 +100,10 @@ public:
                 connectLens_[size_t(s)] = layout.add("connect.t1.s" + std::to_string(s) + ".lens", 2);
     }
 
-    Spectrum Li(const Ray& ray, const SampleView& sv, TileContext& tile) const override {
+    Spectrum Li(const Ray& ray, const TracedHit& first, const SampleView& sv, TileContext& tile) const override {
         if (scene_.lights().empty()) return {};
         thread_local std::vector<PathVertex> cam, light;
-        subpaths_.cameraSubpath(ray, sv, tile, cam);
+        subpaths_.cameraSubpath(ray, first, sv, tile, cam);
         subpaths_.lightSubpath(sv, tile, light);
 
         Spectrum L;

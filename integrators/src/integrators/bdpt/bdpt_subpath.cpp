@@ -65,14 +65,20 @@ bool SubpathGenerator::scatter(std::vector<PathVertex>& path, const Vec3& woW, f
     return true;
 }
 
-void SubpathGenerator::walk(Ray ray, Spectrum beta, float pdfDir, TransportMode mode,
+void SubpathGenerator::walk(Ray ray, const TracedHit* first, Spectrum beta, float pdfDir, TransportMode mode,
                             const std::vector<BounceDims>& dims, int maxSurface, const SampleView& sv,
                             TileContext& tile, std::vector<PathVertex>& path) const {
     for (int b = 0; b < maxSurface; ++b) {
-        SurfaceHit hit;
-        ++tile.rays;
-        if (!scene_.intersect(ray, hit)) return;
-        pushSurface(hit, beta, pdfDir, path);
+        SurfaceHit traced;
+        const SurfaceHit* hit = &traced;
+        if (b == 0 && first) {
+            if (!first->found) return;
+            hit = &first->hit;
+        } else {
+            ++tile.rays;
+            if (!scene_.intersect(ray, traced)) return;
+        }
+        pushSurface(*hit, beta, pdfDir, path);
         if (b + 1 >= maxSurface || size_t(b) >= dims.size()) return;
         const BounceDims& d = dims[size_t(b)];
         if (!scatter(path, -ray.d, sv.get1D(d.lobe), sv.get2D(d.dir), mode, beta, pdfDir, ray)) return;
@@ -111,8 +117,8 @@ bool SubpathGenerator::specularChainProbe(std::vector<PathVertex>& path, int pro
     }
 }
 
-void SubpathGenerator::cameraSubpath(const Ray& ray, const SampleView& sv, TileContext& tile,
-                                     std::vector<PathVertex>& cam) const {
+void SubpathGenerator::cameraSubpath(const Ray& ray, const TracedHit& first, const SampleView& sv,
+                                     TileContext& tile, std::vector<PathVertex>& cam) const {
     cam.clear();
     PathVertex z0;
     z0.kind = VertexKind::Camera;
@@ -122,7 +128,7 @@ void SubpathGenerator::cameraSubpath(const Ray& ray, const SampleView& sv, TileC
     cam.push_back(z0);
     float pdfPos, pdfDir;
     camera_.pdfWe(ray, pdfPos, pdfDir);
-    walk(ray, Spectrum(1.0f), pdfDir, TransportMode::Radiance, camBounce_, maxDepth_ + 1, sv, tile, cam);
+    walk(ray, &first, Spectrum(1.0f), pdfDir, TransportMode::Radiance, camBounce_, maxDepth_ + 1, sv, tile, cam);
 }
 
 void SubpathGenerator::lightSubpath(const SampleView& sv, TileContext& tile, std::vector<PathVertex>& light) const {
@@ -144,7 +150,7 @@ void SubpathGenerator::lightSubpath(const SampleView& sv, TileContext& tile, std
     light.push_back(y0);
     if (lightDir_ < 0) return;
     Spectrum beta = le.L * (absDot(le.n, le.ray.d) / (y0.pdfFwd * le.pdfDir));
-    walk(le.ray, beta, le.pdfDir, TransportMode::Importance, lightBounce_, maxDepth_, sv, tile, light);
+    walk(le.ray, nullptr, beta, le.pdfDir, TransportMode::Importance, lightBounce_, maxDepth_, sv, tile, light);
 }
 
 } // namespace stipple::render::bdpt

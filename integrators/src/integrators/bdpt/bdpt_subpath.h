@@ -27,8 +27,9 @@ public:
     // no vertex could ever be connected, e.g. every material is specular).
     void declareDimensions(SampleLayout& layout, bool lightWalk);
 
-    // z_0 on the lens (from the primary ray) and up to D + 1 surface vertices.
-    void cameraSubpath(const Ray& ray, const SampleView& sv, TileContext& tile, std::vector<PathVertex>& out) const;
+    // z_0 on the lens (from the primary ray, whose closest hit is `first`) and up to D + 1 surface vertices.
+    void cameraSubpath(const Ray& ray, const TracedHit& first, const SampleView& sv, TileContext& tile,
+                       std::vector<PathVertex>& out) const;
     // y_0 on a light and, when the light walk is declared, up to D surface vertices. Empty without lights.
     void lightSubpath(const SampleView& sv, TileContext& tile, std::vector<PathVertex>& out) const;
 
@@ -49,8 +50,10 @@ private:
     // throughput, sets the previous vertex's reverse density and returns the next ray; false when nothing is left.
     static bool scatter(std::vector<PathVertex>& path, const Vec3& woW, float uc, Point2 u, TransportMode mode,
                         Spectrum& beta, float& pdfDir, Ray& ray);
-    void walk(Ray ray, Spectrum beta, float pdfDir, TransportMode mode, const std::vector<BounceDims>& dims,
-              int maxSurface, const SampleView& sv, TileContext& tile, std::vector<PathVertex>& path) const;
+    // `first`: the first ray's closest hit when already traced (camera rays), else null.
+    void walk(Ray ray, const TracedHit* first, Spectrum beta, float pdfDir, TransportMode mode,
+              const std::vector<BounceDims>& dims, int maxSurface, const SampleView& sv, TileContext& tile,
+              std::vector<PathVertex>& path) const;
 
     const RenderScene& scene_;
     const Camera& camera_;
