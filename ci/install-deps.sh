@@ -21,6 +21,8 @@ main_packages=(
   gnuplot-nox             # the report's and Figure 3's plots
   openimageio-tools       # OpenImageIO's CMake config names its tools (/usr/bin/iconvert ...): configure fails without them
   libcpp-httplib-dev pkg-config  # stipple-validate --serve-study (the perceptual experiment's votes)
+  python3-imath           # not used, but Imath's CMake config (through OpenImageIO) names its Python module: without
+                          # it every configure prints a "file does not exist" warning
 )
 test_packages=(
   libboost-test-dev
