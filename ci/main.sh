@@ -16,7 +16,7 @@ cmake --build --preset main -j 2
 echo "main: installed and built in $SECONDS s"
 status=0
 build/release/bin/stipple-validate validation/quick.yaml -o report --threads 2 --cache build/stipple-cache || status=$?
-# Figure 3 at 50 sets per N (~10 s); the full 1000-set run is in the README's other commands.
+# Figure 3 at 50 sets per N (about 20 s of CPU); the full 1000-set run (about 6 min) is in the README's other commands.
 if ! build/release/bin/shim_pointsets_figure3 -o report/figure3 --quick > report/figure3.log 2>&1; then
   echo "main: Figure 3 failed (see report/figure3.log)" >&2
   [ "$status" -ne 0 ] || status=3
