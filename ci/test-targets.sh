@@ -18,7 +18,7 @@ ctest --test-dir "$dir" --show-only=json-v1 "$@" | python3 -c '
 import json, pathlib, re, sys
 root = sys.argv[1]
 selected = {t["name"] for t in json.load(sys.stdin)["tests"]}
-program = re.compile(re.escape(root) + r"/bin/([A-Za-z0-9_.+-]+)")
+program = re.compile(re.escape(root) + r"/bin/([A-Za-z0-9_+-][A-Za-z0-9_.+-]*)")  # not bin/.. or bin/.
 library = re.compile(re.escape(root) + r"/lib/lib([A-Za-z0-9_+-]+)[.]so")
 registration = re.compile(r"^add_test\(\[=\[(.*?)\]=\] (.*)\)$")
 targets = {"stipple"}

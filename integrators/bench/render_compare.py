@@ -7,7 +7,8 @@
     python3 integrators/bench/render_compare.py --baseline DIR --candidate DIR [--rounds K (7)]
         [--scenes-dir DIR] [--cases SCENE:INTEGRATOR:SPP,...] [--threads T (2)] [--shim LIB] [--bound B]
 
-Each DIR is a build tree (or a copy of one) holding bin/stipple-render and lib/libstipple.so.1. Per case the two
+Each DIR is a build tree (or a copy of one, or its bin/stipple-render) holding bin/stipple-render and
+lib/libstipple.so.1. Per case the two
 builds run in alternation, K rounds of one process each (the order flips every round: ABBA...), so that the load of
 a shared machine falls on both alike. A run's rate is the image's samples (width x height x spp) over the render
 time the program reports (wall clock, scene loading and the BVH build excluded); beside it, the rate per CPU second
@@ -96,6 +97,13 @@ def parse_cases(text):
     return cases
 
 
+def build_tree(path):
+    """A build tree, given as the tree or as its bin/stipple-render (what CMake's $<TARGET_FILE> names)."""
+    if os.path.basename(path) == "stipple-render" and os.path.isfile(path):
+        return os.path.dirname(os.path.dirname(os.path.abspath(path)))
+    return path
+
+
 def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -110,6 +118,7 @@ def main(argv):
     o = parser.parse_args(argv)
     if o.rounds < 1:
         sys.exit("render_compare: --rounds must be at least 1")
+    o.baseline, o.candidate = build_tree(o.baseline), build_tree(o.candidate)
     for d in (o.baseline, o.candidate):
         if not os.access(os.path.join(d, "bin", "stipple-render"), os.X_OK):
             sys.exit(f"render_compare: no bin/stipple-render in {d}")

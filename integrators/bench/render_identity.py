@@ -7,7 +7,8 @@
     python3 integrators/bench/render_identity.py --baseline DIR --candidate DIR [--spp N (8)]
         [--scenes-dir DIR] [--scenes S,... (all four)] [--patterns P,... (stratified,sobol)] [--threads T (2)]
 
-Each DIR is a build tree (or a copy of one) holding bin/stipple-render and lib/libstipple.so.1. Every scene is
+Each DIR is a build tree (or a copy of one, or its bin/stipple-render) holding bin/stipple-render and
+lib/libstipple.so.1. Every scene is
 rendered with every integrator (path, bdpt, direct, direct-light, direct-bsdf) and pattern by both builds with seed 7
 at a small size, and the EXRs' pixels are compared exactly with OpenImageIO's idiff (-fail 0 -warn 0; the metadata,
 which holds timings, is not compared). A change of the renderer that keeps its arithmetic must pass; one that
@@ -33,6 +34,13 @@ def render(build, scene_path, integrator, pattern, spp, threads, out):
         sys.exit(f"render_identity: {' '.join(cmd)} exited with {proc.returncode}: {proc.stderr.strip()}")
 
 
+def build_tree(path):
+    """A build tree, given as the tree or as its bin/stipple-render (what CMake's $<TARGET_FILE> names)."""
+    if os.path.basename(path) == "stipple-render" and os.path.isfile(path):
+        return os.path.dirname(os.path.dirname(os.path.abspath(path)))
+    return path
+
+
 def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -47,6 +55,7 @@ def main(argv):
     idiff = shutil.which("idiff")
     if not idiff:
         sys.exit("render_identity: OpenImageIO's idiff is not on PATH (Debian: openimageio-tools)")
+    o.baseline, o.candidate = build_tree(o.baseline), build_tree(o.candidate)
     for d in (o.baseline, o.candidate):
         if not os.access(os.path.join(d, "bin", "stipple-render"), os.X_OK):
             sys.exit(f"render_identity: no bin/stipple-render in {d}")
