@@ -20,6 +20,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         const Args a = parseArgs(argv);
         if (a.help || a.version) return 0; // both stop before the arguments a run needs
+        // The perceptual experiment's standalone modes: one folder, no matrix, a port in range.
+        if (!a.serveStudy.empty() || !a.analyseStudy.empty()) {
+            fuzzRequire(a.matrix.empty() && (a.serveStudy.empty() != a.analyseStudy.empty()));
+            fuzzRequire(a.port >= 0 && a.port <= 65535);
+            for (const std::string& votes : a.extraVotes) fuzzRequire(!votes.empty());
+            return 0;
+        }
         fuzzRequire(!a.matrix.empty());
         // A path given empty is a usage error, never "the default" (or the working folder).
         fuzzRequire(!a.out.empty());
