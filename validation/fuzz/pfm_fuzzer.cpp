@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -24,7 +25,9 @@ void require(bool condition) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size > 16384) return 0;
-    static const std::string path = "/tmp/stipple-pfm-fuzz-" + std::to_string(::getpid()) + ".pfm";
+    // The system's temporary folder ($TMPDIR), one file per fuzzing process.
+    static const std::string path =
+        (std::filesystem::temp_directory_path() / ("stipple-pfm-fuzz-" + std::to_string(::getpid()) + ".pfm")).string();
     FILE* f = std::fopen(path.c_str(), "wb");
     if (!f) return 0;
     const bool written = std::fwrite(data, 1, size, f) == size;
