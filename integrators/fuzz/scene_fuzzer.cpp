@@ -29,8 +29,13 @@ void require(bool condition) {
 
 const std::string& scenePath() {
     static const std::string path = [] {
-        fs::path dir = fs::temp_directory_path() / ("stipple-scene-fuzz-" + std::to_string(getpid()));
+        static const fs::path dir = fs::temp_directory_path() / ("stipple-scene-fuzz-" + std::to_string(getpid()));
         fs::create_directories(dir);
+        // A run that ends normally (its time budget spent) leaves nothing behind; a crash keeps the input.
+        std::atexit([] {
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+        });
         return (dir / "fuzz.yaml").string();
     }();
     return path;

@@ -11,6 +11,7 @@
 
 #include <stipple/render/input_limits.h>
 #include <stipple/render/progress_bar.h>
+#include <stipple/testing/scratch_folder.h>
 
 #include <fstream>
 
@@ -25,7 +26,7 @@ const char* kHeader = "camera: { position: [0, 0, 5], look_at: [0, 0, 0], fov: 4
 const char* kQuad = "  - { type: quad, vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], material: white }\n";
 
 fs::path freshDir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("stipple-limits-" + std::to_string(getpid())) / name;
+    fs::path dir = stipple::testing::scratchRoot() / "input-limits" / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

@@ -10,6 +10,7 @@
 
 #include <stipple/render/publish_journal.h>
 #include <stipple/render/temp_files.h>
+#include <stipple/testing/scratch_folder.h>
 
 #include <chrono>
 #include <csignal>
@@ -32,7 +33,7 @@ namespace {
 struct Folder {
     fs::path dir;
     explicit Folder(const std::string& name) {
-        dir = fs::temp_directory_path() / ("stipple-publish-" + std::to_string(getpid())) / name;
+        dir = stipple::testing::scratchRoot() / "publish" / name;
         fs::remove_all(dir);
         fs::create_directories(dir);
         write("img.exr", "old exr");

@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <stipple/render/renderer.h>
+#include <stipple/testing/scratch_folder.h>
 
 #include <unistd.h>
 
@@ -42,7 +43,7 @@ BOOST_AUTO_TEST_CASE(identity_follows_the_file_bytes) {
 
     // Same bytes under another name: the same identity. One byte appended (ELF ignores trailing bytes, so it
     // still loads and reports the same version): another identity.
-    const fs::path dir = fs::temp_directory_path() / ("stipple-shim-identity-" + std::to_string(getpid()));
+    const fs::path dir = stipple::testing::freshScratchFolder("shim-identity");
     fs::create_directories(dir);
     const fs::path same = dir / "same.so", changed = dir / "changed.so";
     fs::copy_file(original, same, fs::copy_options::overwrite_existing);

@@ -5,6 +5,7 @@
 
 #include <stipple/render/renderer.h>
 
+#include <stipple/testing/scratch_folder.h>
 #include <stipple/testing/statistics.h>
 
 #include <cmath>
@@ -21,7 +22,7 @@ inline std::string scenePath(const std::string& name) { return std::string(STIPP
 // Writes `text` to a fresh file in a per-process temporary directory and returns its path.
 inline std::string writeTempFile(const std::string& name, const std::string& text) {
     namespace fs = std::filesystem;
-    fs::path dir = fs::temp_directory_path() / ("stipple-render-test-" + std::to_string(getpid()));
+    fs::path dir = stipple::testing::scratchRoot() / "render";
     fs::create_directories(dir);
     fs::path p = dir / name;
     std::ofstream(p, std::ios::binary) << text;

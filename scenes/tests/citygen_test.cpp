@@ -12,6 +12,7 @@
 #include <string>
 
 #include <unistd.h>
+#include <stipple/testing/scratch_folder.h>
 
 namespace fs = std::filesystem;
 
@@ -30,7 +31,7 @@ std::map<std::string, std::string> readTree(const fs::path& root) {
 }
 
 fs::path generate(const std::string& tag, unsigned seed) {
-    fs::path dir = fs::temp_directory_path() / ("stipple-citygen-test-" + std::to_string(::getpid()) + "-" + tag);
+    fs::path dir = stipple::testing::scratchRoot() / ("citygen-" + tag);
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::string cmd = std::string("\"") + STIPPLE_CITYGEN + "\" --seed " + std::to_string(seed) + " --out \"" +

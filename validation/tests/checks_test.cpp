@@ -19,6 +19,8 @@
 #include "study_answers.h"
 #include "test_vocabulary.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 namespace fs = std::filesystem;
 
@@ -27,7 +29,7 @@ struct Fixture {
     fs::path dir;
     Matrix matrix;
     Fixture() {
-        dir = fs::temp_directory_path() / ("stipple-checks-test-" + std::to_string(::getpid()));
+        dir = stipple::testing::freshScratchFolder("checks");
         fs::create_directories(dir);
         std::ofstream(dir / "box.yaml") << "name: box\n";
         std::ofstream(dir / "m.yaml") << R"(scenes: [box.yaml]

@@ -17,6 +17,8 @@
 #include "matrix.h"
 #include "test_vocabulary.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 namespace fs = std::filesystem;
 
@@ -32,7 +34,7 @@ std::string loadError(const std::string& path) {
 }
 
 fs::path freshDir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("stipple-matrix-limits-" + std::to_string(getpid())) / name;
+    fs::path dir = stipple::testing::scratchRoot() / "matrix-limits" / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

@@ -18,6 +18,8 @@
 #include "matrix.h"
 #include "test_vocabulary.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 namespace fs = std::filesystem;
 namespace limits = stipple::render::limits;
@@ -27,7 +29,7 @@ BOOST_AUTO_TEST_CASE(big_matrix_loads_in_proportion) {
         BOOST_TEST_MESSAGE("skipped under a sanitizer: its shadow memory is not the loader's");
         return;
     }
-    const fs::path dir = fs::temp_directory_path() / ("stipple-matrix-memory-" + std::to_string(getpid()));
+    const fs::path dir = stipple::testing::freshScratchFolder("matrix-memory");
     fs::create_directories(dir);
     std::ofstream(dir / "box.yaml") << "name: box\n";
     std::string text = "patterns: [independent]\nspp: [4]\nseeds: 4\nscenes:\n";

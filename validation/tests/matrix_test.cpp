@@ -12,6 +12,8 @@
 #include "matrix.h"
 #include "test_vocabulary.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 namespace fs = std::filesystem;
 
@@ -20,7 +22,7 @@ namespace {
 struct Fixture {
     fs::path dir;
     Fixture() {
-        dir = fs::temp_directory_path() / ("stipple-matrix-test-" + std::to_string(::getpid()));
+        dir = stipple::testing::freshScratchFolder("matrix");
         fs::create_directories(dir / "scenes");
         std::ofstream(dir / "scenes" / "box.yaml") << "name: box\n";
         std::ofstream(dir / "scenes" / "mis.yaml") << "name: mis\n";

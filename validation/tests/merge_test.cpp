@@ -15,13 +15,15 @@
 #include "results.h"
 #include "shard_fingerprint.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 namespace fs = std::filesystem;
 
 namespace {
 
 struct Shards {
-    fs::path dir = fs::temp_directory_path() / ("stipple-merge-test-" + std::to_string(getpid()));
+    fs::path dir = stipple::testing::freshScratchFolder("merge");
     Matrix matrix;
     Shards() {
         fs::create_directories(dir);

@@ -21,6 +21,8 @@
 #include "matrix.h"
 #include "perceptual/votes.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 
 namespace {
@@ -259,7 +261,7 @@ reference: { pattern: stratified, spp: 1024 }
 // The parser checks that scene files exist: one, empty, in a temporary folder.
 std::string matrixPath() {
     static const std::filesystem::path dir = [] {
-        auto d = std::filesystem::temp_directory_path() / ("stipple-perceptual-test-" + std::to_string(::getpid()));
+        auto d = stipple::testing::freshScratchFolder("perceptual");
         std::filesystem::create_directories(d);
         std::ofstream(d / "scene.yaml") << "name: box\n";
         return d;

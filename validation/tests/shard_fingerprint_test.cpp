@@ -13,12 +13,14 @@
 #include "shard_fingerprint.h"
 #include "test_vocabulary.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 namespace fs = std::filesystem;
 
 namespace {
 struct Fixture {
-    fs::path dir = fs::temp_directory_path() / ("stipple-fingerprint-test-" + std::to_string(::getpid()));
+    fs::path dir = stipple::testing::freshScratchFolder("fingerprint");
     Matrix matrix;
     Fixture() {
         fs::create_directories(dir);

@@ -15,6 +15,8 @@
 #include "image_metrics.h"
 #include "results.h"
 
+#include <stipple/testing/scratch_folder.h>
+
 using namespace stipple::validation;
 
 namespace {
@@ -157,7 +159,7 @@ BOOST_AUTO_TEST_CASE(zero_and_undefined_errors_downstream) {
     results.matrixName = "stiff";
     results.rows = rows;
     const std::string path =
-        (std::filesystem::temp_directory_path() / ("stipple-stiff-results-" + std::to_string(getpid()) + ".json"))
+        (stipple::testing::scratchRoot() / "stiff-results.json")
             .string();
     writeResultsJson(path, results, cells, slopes, Json::array());
     Results back = readResultsJson(path);
