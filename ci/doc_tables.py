@@ -117,7 +117,7 @@ TABLES = [
           command="{bin}/shim_progressive_prefixes > {out}"),
     Table("cost", "shim/docs/tables/cost.md", ["shim/bench/shim_bench.cpp", "shim/bench/ratios.py"] + LIBRARY,
           command="for isa in avx512 avx2 baseline; do {bin}/shim_shim_bench --isa=$isa "
-                  "--benchmark_filter='BM_(FillPixel|Sample|Stream|StreamFill)/pattern:[012457]/' "
+                  "--benchmark_filter='BM_(FillPixel|Sample|Stream|StreamFill)/pattern:[0124567]/' "
                   "--benchmark_min_time=0.05 --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true "
                   "--benchmark_format=json > {tmp}/$isa.json 2>/dev/null || continue; "
                   "python3 shim/bench/ratios.py {tmp}/$isa.json; echo; done > {out}; test -s {out}",
@@ -126,13 +126,13 @@ TABLES = [
           ["shim/bench/shim_bench.cpp", "shim/bench/blue_noise_ratios.py"] + LIBRARY,
           command="{bin}/shim_shim_bench --benchmark_filter='BM_BlueNoiseFill/' --benchmark_min_time=0.05 "
                   "--benchmark_enable_random_interleaving=true --benchmark_repetitions=5 --benchmark_format=json "
-                  "> {tmp}/blue.json && python3 shim/bench/blue_noise_ratios.py {tmp}/blue.json > {out}",
+                  "> {tmp}/blue.json && { python3 shim/bench/blue_noise_ratios.py {tmp}/blue.json > {out}; test -s {out}; }",
           fence=True),
     Table("cursor", "shim/docs/tables/cursor.md",
           ["shim/bench/cursor_bench.cpp", "shim/bench/cursor_ratios.py"] + LIBRARY,
           command="{bin}/shim_cursor_bench --benchmark_enable_random_interleaving=true --benchmark_repetitions=5 "
                   "--benchmark_min_time=0.05 --benchmark_format=json > {tmp}/cursor.json && "
-                  "python3 shim/bench/cursor_ratios.py {tmp}/cursor.json > {out}",
+                  "{ python3 shim/bench/cursor_ratios.py {tmp}/cursor.json > {out}; test -s {out}; }",
           fence=True),
 ]
 
