@@ -111,7 +111,7 @@ TABLES = [
                   "{bin}/shim_battery -o {tmp} --sets 400 --threads 2 --pointsets {out}"),
     Table("blue-noise-gain", "shim/docs/tables/blue-noise-gain.md",
           ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_integrands.h"] + LIBRARY,
-          command="{bin}/shim_blue_noise_gain -o {tmp} --images 32 --patterns independent,stratified "
+          command="{bin}/shim_blue_noise_gain -o {tmp} --images 24 --patterns independent,stratified "
                   "&& cp {tmp}/blue_noise_gain.md {out}"),
     Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"] + LIBRARY,
           command="{bin}/shim_progressive_prefixes > {out}"),
