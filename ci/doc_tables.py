@@ -50,15 +50,20 @@ class Table:
 
 
 def usage_text():
-    """stipple-validate's --help text, read from the string literal cli_args.cpp prints."""
-    source = (ROOT / "validation/src/cli_args.cpp").read_text()
-    body = re.search(r"kValidateUsage\s*=\s*(.*?);\n", source, re.S).group(1)
+    """stipple-validate's --help text, read from the string literal kValidateUsage (wherever validation/src keeps it)."""
+    for path in sorted((ROOT / "validation/src").rglob("*.cpp")):
+        m = re.search(r"kValidateUsage\s*=\s*(.*?);\n", path.read_text(), re.S)
+        if m:
+            break
+    else:
+        raise SystemExit("doc_tables: no kValidateUsage string in validation/src")
+    body = m.group(1)
     text = "".join(re.findall(r'"((?:[^"\\]|\\.)*)"', body))
     return text.encode().decode("unicode_escape")
 
 
 def derive_options():
-    return ("# stipple-validate options\n\nWhat `stipple-validate --help` prints (from `validation/src/cli_args.cpp`)."
+    return ("# stipple-validate options\n\nWhat `stipple-validate --help` prints (from the usage string in `validation/src`)."
             " A value may follow its option or be attached with `=`; an empty value is a usage error.\n\n```text\n"
             + usage_text() + "```\n")
 
@@ -101,7 +106,7 @@ def derive_sources():
 
 
 TABLES = [
-    Table("validate-options", "validation/docs/options.md", ["validation/src/cli_args.cpp"], derive=derive_options),
+    Table("validate-options", "validation/docs/options.md", ["validation/src/**"], derive=derive_options),
     Table("validate-sources", "validation/docs/sources.md", ["validation/src/**"], derive=derive_sources),
     Table("spectra", "shim/POINTSETS-spectra.md", ["shim/bench/spectrum.cpp"] + LIBRARY,
           command="{bin}/shim_spectrum > {out}"),
