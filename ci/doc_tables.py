@@ -8,22 +8,29 @@ for it in TABLES below; a document links to the file instead of copying numbers.
 
 - derived: cheap and deterministic, made from the repository's text (the validation options from its usage
   string, the validation source map from each header's first comment). --check regenerates them and diffs.
-- measured: a benchmark or statistical run of seconds to many minutes (sample quality, timings). Its file's first
-  line records the command that made it and the SHA-256 of its inputs: the generator's sources and the sources of
-  the library it measures. --check recomputes that hash and fails when it differs (or when TABLES now lists
-  another command for it): the table no longer describes the code. This is deliberately coarse: any change to the measured library's sources stales its tables, even one
-  that changes no value, because a check that runs in seconds cannot tell which changes matter (timings move with
-  any code change); regenerating is the price of a table that says what the code does.
+- measured: a benchmark or statistical run of seconds to many minutes. Its file's first line records the command
+  that made it and the SHA-256 of its inputs; --check recomputes that hash and fails when it differs (or when
+  TABLES lists another command for it): the table no longer describes the code. What the inputs are depends on
+  what the numbers are a function of:
+  - sample-quality tables (battery, spectra, blue-noise gain, prefixes) are a function of the values the library
+    serves and of the generator: their inputs are the generator's sources and the line `shim_output_digest`
+    prints, a hash of every value every pattern serves (all calls, flags, arities, several N, pixels and blocks).
+    A change that moves no served bit (a refactor, a faster kernel) leaves them true; one that moves any bit
+    stales them, even where the table would not visibly change, since the check cannot run the measurement.
+  - timing tables (cost, blue-noise cost, cursor) are a function of the code itself: their inputs are the
+    generator's sources and every source of the library, so any change to the library stales them.
 
-    python3 ci/doc_tables.py --check                                 # the test repo.doc_tables (seconds)
+    python3 ci/doc_tables.py --check [--build-tree build/release]   # the test repo.doc_tables (seconds)
     python3 ci/doc_tables.py --regenerate [--build-tree build/release] [NAME ...]   # all tables: about 45 min
     python3 ci/doc_tables.py --list
 
---regenerate needs a release tree built with the benchmarks (the default preset); it runs each command from the
+--check runs the build tree's bin/shim_output_digest; --regenerate needs a release tree built with the benchmarks
+(the default preset); it runs each command from the
 repository root, writes the table with its header, and leaves every other file alone. Exit status: 0 fresh (or
 regenerated), 1 a table is stale or a command failed, 2 bad arguments.
 """
 import argparse
+import functools
 import glob
 import hashlib
 import pathlib
@@ -40,9 +47,11 @@ LIBRARY = ["shim/src/**", "shim/include/**"]  # what a measured shim table measu
 
 
 class Table:
-    def __init__(self, name, path, inputs, command=None, derive=None, fence=False):
+    def __init__(self, name, path, inputs, command=None, derive=None, fence=False, served=False, start=""):
         self.name, self.path, self.inputs, self.command, self.derive, self.fence = (name, path, inputs, command,
                                                                                    derive, fence)
+        self.start = start  # what {out} holds before the command runs
+        self.served = served  # a function of the served values: keyed by shim_output_digest, not the sources
 
     @property
     def kind(self):
@@ -108,17 +117,17 @@ def derive_sources():
 TABLES = [
     Table("validate-options", "validation/docs/options.md", ["validation/src/**"], derive=derive_options),
     Table("validate-sources", "validation/docs/sources.md", ["validation/src/**"], derive=derive_sources),
-    Table("spectra", "shim/POINTSETS-spectra.md", ["shim/bench/spectrum.cpp"] + LIBRARY,
+    Table("spectra", "shim/POINTSETS-spectra.md", ["shim/bench/spectrum.cpp"], served=True,
           command="{bin}/shim_spectrum > {out}"),
     Table("battery", "shim/docs/tables/battery.md",
-          ["shim/bench/battery.cpp", "shim/bench/battery_integrands.h"] + LIBRARY,
-          command="printf '<!-- battery:begin -->\\n<!-- battery:end -->\\n' > {out} && "
-                  "{bin}/shim_battery -o {tmp} --sets 400 --threads 2 --pointsets {out}"),
+          ["shim/bench/battery.cpp", "shim/bench/battery_integrands.h"], served=True,
+          start="<!-- battery:begin -->\n<!-- battery:end -->\n",  # shim_battery --pointsets fills between
+          command="{bin}/shim_battery -o {tmp} --sets 400 --threads 2 --pointsets {out}"),
     Table("blue-noise-gain", "shim/docs/tables/blue-noise-gain.md",
-          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_integrands.h"] + LIBRARY,
+          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_integrands.h"], served=True,
           command="{bin}/shim_blue_noise_gain -o {tmp} --images 24 --patterns independent,stratified "
                   "&& cp {tmp}/blue_noise_gain.md {out}"),
-    Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"] + LIBRARY,
+    Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"], served=True,
           command="{bin}/shim_progressive_prefixes > {out}"),
     Table("cost", "shim/docs/tables/cost.md", ["shim/bench/shim_bench.cpp", "shim/bench/ratios.py"] + LIBRARY,
           command="for isa in avx512 avx2 baseline; do {bin}/shim_shim_bench --isa=$isa "
@@ -142,6 +151,22 @@ TABLES = [
 ]
 
 
+BUILD_TREE = ROOT / "build/release"
+
+
+@functools.lru_cache(maxsize=None)
+def served_digest():
+    """The line shim_output_digest prints: a hash of every value the library serves."""
+    program = BUILD_TREE / "bin/shim_output_digest"
+    if not program.exists():
+        raise SystemExit(f"doc_tables: {program} is missing: build the target shim_output_digest (or pass "
+                         "--build-tree)")
+    run = subprocess.run([str(program)], capture_output=True, text=True)
+    if run.returncode != 0 or not run.stdout.startswith("stipple output digest "):
+        raise SystemExit(f"doc_tables: {program} failed: {run.stderr.strip()}")
+    return run.stdout.strip()
+
+
 def inputs_hash(table):
     files = set()
     for pattern in table.inputs:
@@ -151,6 +176,8 @@ def inputs_hash(table):
     h = hashlib.sha256()
     for f in sorted(files):
         h.update(f.encode() + b"\0" + (ROOT / f).read_bytes() + b"\0")
+    if table.served:
+        h.update(served_digest().encode())
     return h.hexdigest()
 
 
@@ -206,6 +233,7 @@ def regenerate(tables, build_tree):
             out = pathlib.Path(tmp) / "table.md"
             command = t.command.format(bin=str(build_tree / "bin"), tmp=tmp, out=str(out))
             shown = shown_command(t)
+            out.write_text(t.start)
             print(f"[{t.name}] {shown}", flush=True)
             if subprocess.run(["bash", "-c", "set -o pipefail; " + command], cwd=ROOT).returncode != 0:
                 print(f"[{t.name}] FAILED; {t.path} left as it was")
@@ -239,9 +267,11 @@ def main():
         for t in tables:
             print(f"{t.name:<18}{t.kind:<10}{t.path}")
         return 0
+    build_tree = pathlib.Path(args.build_tree).resolve()
+    global BUILD_TREE
+    BUILD_TREE = build_tree
     if args.check:
         return check(tables)
-    build_tree = pathlib.Path(args.build_tree).resolve()
     if not args.regenerate or (any(not t.derive for t in tables) and not (build_tree / "bin").is_dir()):
         print(f"no build tree at {build_tree} (pass --build-tree)", file=sys.stderr)
         return 2
