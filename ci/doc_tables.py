@@ -144,13 +144,13 @@ TABLES = [
           ["shim/bench/shim_bench.cpp", "shim/bench/blue_noise_ratios.py"] + LIBRARY,
           command="{bin}/shim_shim_bench --benchmark_filter='BM_BlueNoiseFill/' --benchmark_min_time=0.05 "
                   "--benchmark_enable_random_interleaving=true --benchmark_repetitions=5 --benchmark_format=json "
-                  "> {tmp}/blue.json && { python3 shim/bench/blue_noise_ratios.py {tmp}/blue.json > {out}; test -s {out}; }",
+                  "> {tmp}/blue.json && {{ python3 shim/bench/blue_noise_ratios.py {tmp}/blue.json > {out}; test -s {out}; }}",
           fence=True),
     Table("cursor", "shim/docs/tables/cursor.md",
           ["shim/bench/cursor_bench.cpp", "shim/bench/cursor_ratios.py"] + LIBRARY,
           command="{bin}/shim_cursor_bench --benchmark_enable_random_interleaving=true --benchmark_repetitions=5 "
                   "--benchmark_min_time=0.05 --benchmark_format=json > {tmp}/cursor.json && "
-                  "{ python3 shim/bench/cursor_ratios.py {tmp}/cursor.json > {out}; test -s {out}; }",
+                  "{{ python3 shim/bench/cursor_ratios.py {tmp}/cursor.json > {out}; test -s {out}; }}",
           fence=True),
 ]
 
