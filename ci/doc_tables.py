@@ -28,7 +28,8 @@ for it in TABLES below; a document links to the file instead of copying numbers.
 exist and a #fragment must name one of its headings (GitHub's anchors), so a table or section that moves cannot
 leave a dead link behind.
 
---check runs the build tree's bin/shim_output_digest; --regenerate needs a release tree built with the benchmarks
+--check runs the build tree's bin/shim_output_digest, so it reads the sources as last built (CTest runs after the
+build); --regenerate needs a release tree built with the benchmarks
 (the default preset); it runs each command from the
 repository root, writes the table with its header, and leaves every other file alone. Exit status: 0 fresh (or
 regenerated), 1 a table is stale or a command failed, 2 bad arguments.
