@@ -156,12 +156,13 @@ TABLES = [
 
 
 BUILD_TREE = ROOT / "build/release"
+DIGEST = None  # --digest: the shim_output_digest program (default: the build tree's)
 
 
 @functools.lru_cache(maxsize=None)
 def served_digest():
     """The line shim_output_digest prints: a hash of every value the library serves."""
-    program = BUILD_TREE / "bin/shim_output_digest"
+    program = DIGEST or BUILD_TREE / "bin/shim_output_digest"
     if not program.exists():
         raise SystemExit(f"doc_tables: {program} is missing: build the target shim_output_digest (or pass "
                          "--build-tree)")
@@ -291,6 +292,7 @@ def main():
     mode.add_argument("--regenerate", action="store_true")
     mode.add_argument("--list", action="store_true")
     ap.add_argument("--build-tree", default=str(ROOT / "build/release"))
+    ap.add_argument("--digest", help="the shim_output_digest program (default: BUILD_TREE/bin/shim_output_digest)")
     ap.add_argument("names", nargs="*")
     args = ap.parse_args()
     known = {t.name: t for t in TABLES}
@@ -304,8 +306,9 @@ def main():
             print(f"{t.name:<18}{t.kind:<10}{t.path}")
         return 0
     build_tree = pathlib.Path(args.build_tree).resolve()
-    global BUILD_TREE
+    global BUILD_TREE, DIGEST
     BUILD_TREE = build_tree
+    DIGEST = pathlib.Path(args.digest) if args.digest else None
     if args.check:
         return check(tables, links=not args.names)
     if not args.regenerate or (any(not t.derive for t in tables) and not (build_tree / "bin").is_dir()):
