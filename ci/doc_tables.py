@@ -21,7 +21,7 @@ for it in TABLES below; a document links to the file instead of copying numbers.
     generator's sources and every source of the library, so any change to the library stales them.
 
     python3 ci/doc_tables.py --check [--build-tree build/release]   # the test repo.doc_tables (seconds)
-    python3 ci/doc_tables.py --regenerate [--build-tree build/release] [NAME ...]   # all tables: about 45 min
+    python3 ci/doc_tables.py --regenerate [--build-tree build/release] [NAME ...]   # all: ~30 min on 2 idle cores
     python3 ci/doc_tables.py --list
 
 --check also follows every relative link of the repository's Markdown files (outside code blocks): the file must
