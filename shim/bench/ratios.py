@@ -21,7 +21,7 @@ BOUND = {"FillPixel": 2.0, "StreamFill": 2.0, "Sample": 3.0, "Stream": 3.0}
 PATTERNS = {0: "independent", 1: "stratified", 2: "poisson", 3: "poisson-seed", 4: "sobol", 5: "pmj02", 6: "lattice",
             7: "halton"}
 BOUNDED = (1, 2)  # the bounds are the stratified and poisson promise; sobol and pmj02 are reported alongside
-SHOWN = (1, 2, 4, 5)
+SHOWN = (1, 2, 4, 5, 6, 7)
 
 
 def main(path):
