@@ -19,10 +19,13 @@
 // pixel (padding). Dimension limits: none. Each set uses only the bases 2, 3 and 5 (arity <= 3), and sets are
 // decorrelated by their own scrambles and orders, so a host may ask for any number of dimensions — unlike a
 // Halton sampler whose dimension d takes the d-th prime (pbrt-v4: 1000 primes), nothing runs out.
-// The sequence index is 32-bit: sample indices past 2^32 / M blocks wrap (as the ABI's sample index does).
+// The sequence index is 32-bit: a set's sequence holds G = floor(2^32 / M) blocks, its period N * G sample indices;
+// block b past them is block b mod G of a freshly scrambled and ordered sequence, generation b / G
+// (sequence_generation.h).
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
 #include "permutation.h"
+#include "sequence_generation.h"
 
 #include <array>
 #include <bit>
@@ -144,7 +147,8 @@ void haltonPoints(const SetKey& set, const Dimension& dim, uint32_t first, uint3
     for (uint32_t i = 0; i < count; ++i) haltonPoint<Arity>(s, &b3, &b5, first + i, out + size_t(i) * Arity);
 }
 
-void fillHalton(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+void fillHalton(const SetKey& blockKey, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
+    const SetKey set = sequenceGenerationUnpadded(blockKey, dim.setSize);
     switch (dim.arity) {
     case 1: return haltonPoints<1>(set, dim, first, count, out);
     case 2: return haltonPoints<2>(set, dim, first, count, out);
@@ -156,8 +160,9 @@ void pointHalton(const SetKey& set, const Dimension& dim, uint32_t p, float* out
 
 } // namespace
 
-// Blocks continue the sequence (SetKey::block). The blue-noise flag is refused: its only mechanism for a set that is
-// not strata, a per-pixel toroidal shift of a tile's set, adds a seam on non-periodic integrands (as for sobol).
+// Blocks continue the sequence (SetKey::block), a fresh one per period. The blue-noise flag is refused: its only
+// mechanism for a set that is not strata, a per-pixel toroidal shift of a tile's set, adds a seam on non-periodic
+// integrands (as for sobol).
 extern const PatternOps kHaltonPattern;
 constinit const PatternOps kHaltonPattern{
     .name = "halton",

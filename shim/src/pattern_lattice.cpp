@@ -12,8 +12,10 @@
 // Sample index i of a set of M points (L = 2^m >= M) lies in block b = i / N; its sequence index is
 //     ((blockBase + b) << m) | (nestedUniformScramble(i mod N, indexSeed) mod L),
 // as sobol's: the index shuffle maps every prefix [0, 2^j) onto an aligned run of 2^j sequence indices, and the
-// blocks continue the sequence. indexSeed and the shifts are hashed from the set key, so the dimensions of a pixel
-// are decorrelated (padding). The shift makes every point uniform on the unit cube.
+// blocks continue the sequence for 2^(32-m) blocks, the period N * 2^(32-m) sample indices; block b past them is
+// block b mod 2^(32-m) of a freshly shifted and shuffled sequence, generation b / 2^(32-m) (sequence_generation.h).
+// indexSeed and the shifts are hashed from the set key, so the dimensions of a pixel are decorrelated (padding).
+// The shift makes every point uniform on the unit cube.
 //
 // Strengths and weaknesses (shim/POINTSETS.md): a lattice integrates smooth PERIODIC integrands at a high rate and
 // spaces its points evenly (large minimum distance); on non-periodic integrands a shifted lattice has a seam at the
@@ -21,6 +23,7 @@
 // single jittered offset.
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
+#include "sequence_generation.h"
 
 namespace stipple::detail {
 
@@ -31,11 +34,12 @@ constexpr uint32_t kLatticeVector[3] = {1u, 364981u, 245389u};
 struct LatticeSet {
     uint32_t indexSeed;
     uint32_t shift[3];
-    uint32_t high; // (blockBase + block) << m: the block's part of the sequence index
+    uint32_t high; // block << m (the block within its generation): the block's part of the sequence index
     uint32_t lowMask;
 };
 
-LatticeSet latticeSet(const SetKey& set, const Dimension& dim) {
+LatticeSet latticeSet(const SetKey& blockKey, const Dimension& dim) {
+    const SetKey set = sequenceGeneration(blockKey, blocksPerGenerationPadded(dim.log2Length));
     const uint64_t h0 = hashAt(set.key, 0), h1 = hashAt(set.key, 1);
     const uint32_t bits = dim.log2Length >= 32 ? 32 : dim.log2Length;
     return LatticeSet{static_cast<uint32_t>(h0),
@@ -100,8 +104,9 @@ void pointLattice(const SetKey& set, const Dimension& dim, uint32_t p, float* ou
 
 } // namespace
 
-// Blocks continue the sequence (SetKey::block). The blue-noise flag is refused: its only mechanism for a set that is
-// not strata, a per-pixel toroidal shift of a tile's set, adds a seam on non-periodic integrands (as for sobol).
+// Blocks continue the sequence (SetKey::block), a fresh one per period. The blue-noise flag is refused: its only
+// mechanism for a set that is not strata, a per-pixel toroidal shift of a tile's set, adds a seam on non-periodic
+// integrands (as for sobol).
 extern const PatternOps kLatticePattern;
 constinit const PatternOps kLatticePattern{
     .name = "lattice",

@@ -14,11 +14,13 @@
 //   the sequence, so the first 2^j blocks together are again a net: progressive by construction.
 // - Other M: each block is the first M points of a shuffled net of L points (every prefix of a power-of-two
 //   length is a net; the rest is a nested-scrambled part of the next doubling). Never a fall-back to random.
-// The index is 32-bit: past 2^32 points the sequence repeats.
+// The index is 32-bit: a set's sequence has 2^(32-m) blocks, its period N * 2^(32-m) sample indices; block b past
+// them is block b mod 2^(32-m) of a freshly scrambled sequence, generation b / 2^(32-m) (sequence_generation.h).
 #include "batch_isa.h"
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
 #include "patterns.h"
+#include "sequence_generation.h"
 #include "sobol_matrices.h"
 
 namespace stipple::detail {
@@ -132,21 +134,28 @@ void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32
 void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out) { sobolPoint(set, dim, p, out); }
 
 namespace {
+// The Sobol' set of block set.block, in its generation.
+SobolSet sobolSet(const SetKey& set, const Dimension& dim) {
+    const SetKey inGeneration = sequenceGeneration(set, blocksPerGenerationPadded(dim.log2Length));
+    return SobolSet::perPixel(inGeneration.key).atBlock(inGeneration.block);
+}
+
 template <BatchIsa Isa>
 void fillSet(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    fillSobol<Isa>(SobolSet::perPixel(set.key).atBlock(set.block), dim, first, count, out);
+    fillSobol<Isa>(sobolSet(set, dim), dim, first, count, out);
+}
+void pointSet(const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
+    pointSobol(sobolSet(set, dim), dim, p, out);
 }
 } // namespace
 
-// Blocks continue the sequence (SobolSet::atBlock); with the blue-noise flag one sequence per tile, one shift per
-// pixel for all its blocks.
+// Blocks continue the sequence (SobolSet::atBlock) for a period, then a fresh one starts (sequence_generation.h).
 extern const PatternOps kSobolPattern;
 constinit const PatternOps kSobolPattern{
     .name = "sobol",
     .domain = HashDomain::Sobol,
     .blockKeying = BlockKeying::Sequence,
-    .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
-                float* out) { pointSobol(SobolSet::perPixel(set.key).atBlock(set.block), dim, p, out); },
+    .point = pointSet,
     .fill = {fillSet<BatchIsa::Baseline>, fillSet<BatchIsa::Avx2>, fillSet<BatchIsa::Avx512>},
 };
 

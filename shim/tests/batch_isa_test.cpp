@@ -5,8 +5,8 @@
 // index and stream_fill equals stream, for every pattern the library lists (stipple_pattern_count), arity 1..3, N
 // from 1 to 2^18 within the pattern's limits (progressive grids with and without the cell table, padded grids),
 // k = 1 and 3, runs that start on and off the kernels' 64-point chunks and 16-float vectors, end mid-vector and
-// cross blocks. With the blue-noise flag (every pattern whose limits accept it): every variant's fill_pixel and
-// stream_fill equal the baseline variant's, bitwise.
+// cross blocks, and runs across the end of a sequence's period. With the blue-noise flag (every pattern whose limits
+// accept it): every variant's fill_pixel and stream_fill equal the baseline variant's, bitwise.
 #define BOOST_TEST_MODULE batch_isa
 #include <boost/test/unit_test.hpp>
 
@@ -15,6 +15,8 @@
 
 #include <stipple/stipple.h>
 
+#include <algorithm>
+#include <bit>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -94,8 +96,8 @@ struct PatternUnderTest {
     uint32_t id;
     std::string name;
     stipple_pattern_limits limits;
-    uint32_t largestN;     // past it a set costs generation, not serving: Poisson-disk sets are generated once
-                           // per size (poisson) or per pixel and block, so per point call (poisson-seed)
+    uint32_t largestN; // past it a set costs generation, not serving: Poisson-disk sets are generated once
+                       // per size (poisson) or per pixel and block, so per point call (poisson-seed)
 };
 
 std::vector<PatternUnderTest> everyPattern() {
@@ -133,6 +135,57 @@ BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values) {
                     checkPattern(p.id, n, arity, 1);
                     if (n <= 256 && 3 * n <= p.limits.max_set_size) checkPattern(p.id, n, arity, 3);
                 }
+    }
+    stipple::detail::forceBatchIsa(widest);
+}
+
+// Runs across the end of a sequence's period (sobol, lattice: N * 2^(32 - ceil(log2 kN)); halton: N * floor(2^32 / kN);
+// past it a fresh sequence) and up to the last index equal the per-point values in every variant, for every pattern:
+// streams (k = 1) and arrays (k = 3).
+BOOST_AUTO_TEST_CASE(every_isa_variant_equals_the_per_point_values_past_a_sequence_period) {
+    const stipple::detail::BatchIsa widest = stipple::detail::widestBatchIsa();
+    for (uint32_t isa = 0; isa <= static_cast<uint32_t>(widest); ++isa) {
+        stipple::detail::forceBatchIsa(static_cast<stipple::detail::BatchIsa>(isa));
+        for (const PatternUnderTest& p : everyPattern())
+            for (uint32_t n : {3u, 1000u}) {
+                if (n > p.largestN) continue;
+                stipple_sampler s = makeSampler(p.id, n, 1, 1);
+                for (uint32_t k : {1u, 3u}) {
+                    const uint64_t m = uint64_t(n) * k;
+                    const uint64_t padded = n * (uint64_t(1) << (32 - std::bit_width(m - 1)));
+                    const uint64_t unpadded = n * ((uint64_t(1) << 32) / m);
+                    for (uint64_t end : {padded, unpadded, uint64_t(1) << 32}) {
+                        if (end > (uint64_t(1) << 32)) continue;
+                        const uint32_t first = static_cast<uint32_t>(end - n - 2);
+                        const uint32_t count =
+                            static_cast<uint32_t>(std::min<uint64_t>(2 * n + 4, (1ull << 32) - first));
+                        for (uint32_t arity = 1; arity <= 3; ++arity) {
+                            const size_t perSample = size_t(k) * arity;
+                            std::vector<float> run(count * perSample), one(perSample);
+                            uint32_t mismatches = 0;
+                            if (k == 1)
+                                BOOST_REQUIRE(stipple_sampler_stream_fill(s, 8, 2, first, count, 6, arity, run.data(),
+                                                                          run.size()) == STIPPLE_OK);
+                            else
+                                BOOST_REQUIRE(stipple_sampler_array_fill(s, 8, 2, first, count, 6, arity, k, run.data(),
+                                                                         run.size()) == STIPPLE_OK);
+                            for (uint32_t j = 0; j < count; ++j) {
+                                if (k == 1)
+                                    BOOST_REQUIRE(stipple_sampler_stream(s, 8, 2, first + j, 6, arity, one.data(),
+                                                                         one.size()) == STIPPLE_OK);
+                                else
+                                    BOOST_REQUIRE(stipple_sampler_array(s, 8, 2, first + j, 6, arity, k, one.data(),
+                                                                        one.size()) == STIPPLE_OK);
+                                mismatches += !sameBits(one.data(), run.data() + j * perSample, perSample);
+                            }
+                            BOOST_CHECK_MESSAGE(mismatches == 0, p.name << " N " << n << " k " << k << " arity "
+                                                                        << arity << " from " << first << ": ISA " << isa
+                                                                        << ", " << mismatches << " samples differ");
+                        }
+                    }
+                }
+                stipple_sampler_release(s);
+            }
     }
     stipple::detail::forceBatchIsa(widest);
 }

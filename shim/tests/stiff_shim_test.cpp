@@ -128,6 +128,39 @@ BOOST_AUTO_TEST_CASE(k_values_per_sample_at_the_set_size_limit_edges) {
     }
 }
 
+// sobol, lattice and halton at the end of a sequence's period P and at the last index (stipple.h, "Periods"): the
+// blocks on both sides are served in [0, 1) for extreme seeds and corner pixels, by stream, array and sample
+// (shim.sequence_period checks that no sample past P repeats one before it).
+BOOST_AUTO_TEST_CASE(sequence_patterns_at_the_end_of_their_period) {
+    struct Case {
+        uint32_t pattern, n, k;
+        uint64_t period;
+    };
+    const Case cases[] = {
+        {STIPPLE_PATTERN_SOBOL, 3, 1, 3ull << 30},        {STIPPLE_PATTERN_LATTICE, 3, 1, 3ull << 30},
+        {STIPPLE_PATTERN_HALTON, 3, 1, (1ull << 32) - 1}, {STIPPLE_PATTERN_SOBOL, 4096, 1024, 1u << 22},
+        {STIPPLE_PATTERN_LATTICE, 4096, 1024, 1u << 22},  {STIPPLE_PATTERN_HALTON, 4096, 1024, 1u << 22}};
+    for (const Case& c : cases)
+        for (uint64_t seed : kSeeds) {
+            auto s = makeSampler(c.pattern, c.n, seed, {{2, c.k, "d"}});
+            for (const auto& p : kPixels)
+                for (uint64_t index : {c.period - 1, c.period, uint64_t(kMax32)}) {
+                    const std::string what =
+                        label(c.pattern, c.n, 2, c.k, seed, p[0], p[1]) + " index " + std::to_string(index);
+                    const uint32_t i = static_cast<uint32_t>(index);
+                    std::vector<float> v(size_t(c.k) * 2);
+                    if (c.k == 1)
+                        BOOST_REQUIRE(stipple_sampler_stream(s.get(), p[0], p[1], i, 9, 2, v.data(), 2) == STIPPLE_OK);
+                    else
+                        BOOST_REQUIRE(stipple_sampler_array(s.get(), p[0], p[1], i, 9, 2, c.k, v.data(), v.size()) ==
+                                      STIPPLE_OK);
+                    countBadValues(v, what);
+                    BOOST_REQUIRE(stipple_sampler_sample(s.get(), p[0], p[1], i, 0, v.data(), v.size()) == STIPPLE_OK);
+                    countBadValues(v, what + " (declared)");
+                }
+        }
+}
+
 BOOST_AUTO_TEST_CASE(maximum_n_for_independent_and_stratified) {
     const uint32_t n = STIPPLE_MAX_SAMPLES_PER_PIXEL;
     for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED}) {

@@ -35,6 +35,11 @@
  *     shim/POINTSETS.md; pmj02's are the fresh 4N set's samples up to 4N = 1024). stratified (power-of-two grids) and poisson order a set so that its prefixes are well
  *     spread; sobol and pmj02 are progressive (README: "Any sample count"). The same for fill_pixel (block 0), sample, stream and stream_fill, with or
  *     without STIPPLE_SAMPLER_FLAG_BLUE_NOISE.
+ *   - Periods: sobol, lattice and halton blocks continue one sequence with a 32-bit index, so a set of
+ *     M = k*N points serves P sample indices from one sequence: P = N * 2^(32 - ceil(log2 M)) for sobol and
+ *     lattice, N * floor(2^32 / M) for halton (N = 3: P = 3 * 2^30; arrays of k = 1024 at N = 4096: P = 2^22).
+ *     Index i >= P is served from a freshly randomised sequence (its generation i / P), block (i mod P) / N of
+ *     it: sample i + P is an independent draw, never a repeat of sample i. P >= 2^32 is never reached.
  *   - Every value is a pure function of (seed, pixel x, pixel y, sample index, dimension, value index):
  *     bitwise the same for any thread count, tile order or call order. A sampler handle is immutable after
  *     creation and may be shared by any number of threads for sampling.
