@@ -103,7 +103,7 @@ def main(argv):
         ratios = [c / b for b, c in zip(base, cand)]
         interval = median_interval(ratios)
         shown = f"{interval[0]:.3f}-{interval[1]:.3f}" if interval else "(needs 6 rounds)"
-        print(f"| {label} | {statistics.median(base):.1f} | {statistics.median(cand):.1f} | "
+        print(f"| {label} | {statistics.median(base):.3f} | {statistics.median(cand):.3f} | "
               f"{statistics.median(ratios):.3f} | {shown} |")
     return 0
 
