@@ -29,6 +29,7 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts in a source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from render_compare import load_average, median_interval  # noqa: E402
 
