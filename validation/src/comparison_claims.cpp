@@ -133,67 +133,6 @@ const char* expectationName(Expectation e) {
     return "?";
 }
 
-void evaluateCompare(const Check& k, const Matrix& m, const std::vector<ResultRow>& rows, CheckOutcome& o) {
-    std::string pairs;
-    for (size_t i = 0; i < k.patterns.size(); ++i) pairs += (i ? (k.patterns.size() == 2 ? " vs " : ", ") : "") + k.patterns[i];
-    const Margin margin{k.marginLo, k.marginHi};
-    o.claim = fmt("compare %s%s @ %u spp: %s, %s %s, expect %s (margin %.2f-%.2f; 90%% inside: EQUIVALENT, 95%% "
-                  "excludes 1: BETTER/WORSE)%s",
-                  k.scene.c_str(), k.region.empty() ? "" : (" region " + k.region).c_str(), k.spp, pairs.c_str(),
-                  k.flipMetric ? "mean FLIP"
-                               : fmt("relative squared error Σ_rgb e² / (reference + image mean)², capped at 3·%g², "
-                                     "noisy blocks divided by their noise over the median's",
-                                     kRelativeErrorCap)
-                                     .c_str(),
-                  k.equalTime ? "× CPU s (equal time)" : "per sample", expectationName(k.expect), margin.lo, margin.hi,
-                  k.study.empty() ? "" : ("; study: " + k.study).c_str());
-    bool any = false;
-    for (const auto& s : m.scenes) {
-        if (k.scene != "all" && k.scene != s.name) continue;
-        any = true;
-        for (int ri = -1; ri < int(s.regions.size()); ++ri) {
-            if (ri < 0 && !k.region.empty() && k.region != "image") continue;
-            if (ri >= 0 && (k.region == "image" || (!k.region.empty() && k.region != s.regions[size_t(ri)].name)))
-                continue;
-            for (size_t i = 0; i < k.patterns.size(); ++i)
-                for (size_t j = i + 1; j < k.patterns.size(); ++j) {
-                    VerdictRow v;
-                    v.scene = s.name;
-                    v.region = ri < 0 ? "" : s.regions[size_t(ri)].name;
-                    v.a = k.patterns[i];
-                    v.b = k.patterns[j];
-                    v.spp = k.spp;
-                    v.equalTime = k.equalTime;
-                    v.flip = k.flipMetric;
-                    v.comparison = comparePatterns(rows, s, v.a, v.b, k.spp, ri, k.flipMetric, k.equalTime, margin);
-                    v.status = statusFor(k.expect, v.comparison);
-                    // The plain MSE ratio beside, labelled and without a verdict word: what the weights and the cap
-                    // changed. Only the main figure decides; a second word on the same line read as a second verdict.
-                    std::string plainText;
-                    if (!k.flipMetric) {
-                        const Comparison plain =
-                            comparePatterns(rows, s, v.a, v.b, k.spp, ri, false, k.equalTime, margin, false);
-                        plainText = fmt("; the study's plain MSE%s, not the verdict's error: %s",
-                                        k.equalTime ? " × CPU s" : "", ratioText(plain).c_str());
-                    }
-                    if (v.status == CheckStatus::Fail || (v.status == CheckStatus::NotSeparated && o.status == CheckStatus::Pass))
-                        o.status = v.status;
-                    o.figures.push_back(fmt(
-                        "%s %s: %s/%s %s %s (dof %.0f)%s%s", s.name.c_str(),
-                        v.region.empty() ? "whole image" : v.region.c_str(), v.a.c_str(), v.b.c_str(),
-                        ratioText(v.comparison).c_str(), verdictName(v.comparison.verdict), v.comparison.dof,
-                        plainText.c_str(),
-                        v.status == CheckStatus::Pass ? "" : fmt("   <-- %s", checkStatusName(v.status)).c_str()));
-                    o.verdicts.push_back(v);
-                }
-        }
-    }
-    if (!any) {
-        o.status = CheckStatus::Fail;
-        o.figures.push_back("no scene matches");
-    }
-}
-
 Json verdictsJson(const std::vector<VerdictRow>& verdicts) {
     Json a = Json::array();
     auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };

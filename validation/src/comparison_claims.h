@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
-// The compare check: pattern A against pattern B per scene and region, per sample (equal spp) or per cost (equal
-// CPU seconds), on MSE or mean FLIP, judged with equivalence.h: EQUIVALENT (inside the margin), BETTER, WORSE or
-// NOT SEPARATED, then against what the check expects (PASS / FAIL / NOT SEPARATED).
+// Pattern A against pattern B per scene and region, per sample (equal spp) or per cost (equal CPU seconds), on MSE
+// or mean FLIP, judged with equivalence.h: EQUIVALENT (inside the margin), BETTER, WORSE or NOT SEPARATED, then
+// against what a compare check (compare_check.cpp) expects (PASS / FAIL / NOT SEPARATED).
 #pragma once
 
 #include <string>
@@ -38,11 +38,11 @@ Comparison comparePatterns(const std::vector<ResultRow>& rows, const MatrixScene
                            const std::string& b, uint32_t spp, int region, bool flip, bool equalTime,
                            const Margin& margin = {}, bool relative = true);
 
+// What a compare check expects of pattern A against pattern B (error ratio A / B).
+enum class Expectation { Any, Equivalent, Better, Worse };
+
 CheckStatus statusFor(Expectation expect, const Comparison& c);
 const char* expectationName(Expectation e);
-
-void evaluateCompare(const Check& check, const Matrix& matrix, const std::vector<ResultRow>& rows,
-                     CheckOutcome& outcome);
 
 Json verdictsJson(const std::vector<VerdictRow>& verdicts);
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -63,40 +64,23 @@ struct CropSettings {
     uint32_t spp = 0;        // 0: the largest spp of the matrix
 };
 
-enum class CheckType { Ordering, Slope, TimeRatio, TimeCeiling, EqualTime, EqualSpp, Compare };
+struct CheckKind; // check_kind.h
 
-// What a compare check expects of pattern A against pattern B (error ratio A / B).
-enum class Expectation { Any, Equivalent, Better, Worse };
+// A kind's own parameters: each kind's file derives its struct from this, and only that file reads it.
+struct CheckParams {
+    virtual ~CheckParams() = default;
+};
 
+// A claim of the matrix: its kind (check_kind.h; the registry in check_registry.cpp lists them) and what the
+// kind's keys read. The keys several kinds share are members here; a kind's own live in `params`.
 struct Check {
-    CheckType type = CheckType::Ordering;
+    const CheckKind* kind = nullptr;
     std::string where; // file:line:column of the check in the matrix
     std::string scene = "all";
-    // ordering
-    uint32_t sppMin = 0;
-    std::vector<std::string> order; // best → worst
-    bool notSeparatedFails = true;
-    // slope
-    std::string pattern;
-    double expected = 0, tolerance = 0;
-    // time_ratio
-    std::string numerator, denominator;
-    double maxRatio = 0;
-    bool timeEquivalence = false; // margin given: within [marginLo, marginHi] (TOST) instead of ≤ maxRatio
-    uint32_t spp = 0; // 0: the largest spp of the matrix
-    // time_ceiling
-    double seconds = 0;
-    // equal_time / equal_spp (order: best first; spp as time_ratio)
-    std::string study;       // the study's own conclusion for the scene, printed beside the measured one
-    std::string region;      // empty: the whole image and every region of the scene; else that region only
-    bool flipMetric = false; // metric: flip (mean LDR-FLIP) instead of mse
-    // compare: patterns (A, B; more than two: every pair, in list order), equal time or equal samples, the
-    // expectation, the equivalence margin on the error ratio; region "image": the whole image only
-    std::vector<std::string> patterns;
-    bool equalTime = false;
-    Expectation expect = Expectation::Any;
-    double marginLo = 0.8, marginHi = 1.25;
-    bool failFails = true; // fails_run: false makes a FAIL a finding that does not fail the run
+    std::string study;             // the study's statement the claim tests; empty: a claim of the library's own
+    bool notSeparatedFails = true; // not_separated: fail makes an undecided verdict fail the run
+    bool failFails = true;         // fails_run: false makes a FAIL a finding that does not fail the run
+    std::shared_ptr<CheckParams> params; // set once, when the check is read
 };
 
 // The perceptual experiment (validation/src/perceptual/): test sets of one region's crops, each at the set's spp
@@ -146,7 +130,5 @@ struct MatrixVocabulary {
 Matrix loadMatrix(const std::string& path, const MatrixVocabulary& vocabulary);
 // Same, from text; `path` names it in errors and relative paths resolve against its folder.
 Matrix parseMatrix(const std::string& text, const std::string& path, const MatrixVocabulary& vocabulary);
-
-const char* checkTypeName(CheckType type);
 
 } // namespace stipple::validation

@@ -2,7 +2,7 @@
 // Copyright 2026 The stipple authors
 
 #include "shard_fingerprint.h"
-#include "comparison_claims.h" // expectationName
+#include "check_kind.h"
 
 #include <filesystem>
 #include <fstream>
@@ -22,52 +22,6 @@ const FingerprintField* Fingerprint::find(const std::string& name) const {
 }
 
 namespace {
-
-// A check as the fields that define its claim (its place in the matrix file is left out: moving a line changes
-// no claim).
-ordered_json checkJson(const Check& c) {
-    ordered_json j;
-    j["type"] = checkTypeName(c.type);
-    j["scene"] = c.scene;
-    switch (c.type) {
-    case CheckType::Ordering:
-        j["spp_min"] = c.sppMin;
-        j["order"] = c.order;
-        j["not_separated"] = c.notSeparatedFails ? "fail" : "pass";
-        break;
-    case CheckType::Slope:
-        j["pattern"] = c.pattern;
-        j["expected"] = c.expected;
-        j["tolerance"] = c.tolerance;
-        break;
-    case CheckType::TimeRatio:
-        j["numerator"] = c.numerator;
-        j["denominator"] = c.denominator;
-        j["max"] = c.maxRatio;
-        if (c.timeEquivalence) j["margin"] = {c.marginLo, c.marginHi};
-        j["spp"] = c.spp;
-        break;
-    case CheckType::TimeCeiling: j["seconds"] = c.seconds; break;
-    case CheckType::EqualTime:
-    case CheckType::EqualSpp:
-        j["order"] = c.order;
-        j["spp"] = c.spp;
-        j["region"] = c.region;
-        j["metric"] = c.flipMetric ? "flip" : "mse";
-        break;
-    case CheckType::Compare:
-        j["patterns"] = c.patterns;
-        j["at"] = c.equalTime ? "equal_time" : "equal_spp";
-        j["expect"] = expectationName(c.expect);
-        j["margin"] = {c.marginLo, c.marginHi};
-        j["spp"] = c.spp;
-        j["region"] = c.region;
-        j["metric"] = c.flipMetric ? "flip" : "mse";
-        j["fails_run"] = c.failFails;
-        break;
-    }
-    return j;
-}
 
 std::optional<FingerprintDifference> compare(const Fingerprint& a, const Fingerprint& b, const std::string& prefix) {
     auto selected = [&](const std::string& name) { return name.compare(0, prefix.size(), prefix) == 0; };
@@ -100,7 +54,7 @@ Fingerprint matrixFingerprint(const Matrix& m) {
         ordered_json{{"x", m.crop.x}, {"y", m.crop.y}, {"size", m.crop.size}, {"scale", m.crop.scale}, {"spp", cropSpp}}
             .dump());
     ordered_json checks = ordered_json::array();
-    for (const auto& c : m.checks) checks.push_back(checkJson(c));
+    for (const auto& c : m.checks) checks.push_back(checkClaimJson(c)); // the fields its kind reads
     f.add("matrix.checks", checks.dump());
     return f;
 }

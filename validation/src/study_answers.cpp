@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "check_kind.h"
 #include "comparison_claims.h"
 #include "verdicts_report.h"
 
@@ -106,48 +107,18 @@ std::string verdictSummary(const std::vector<const VerdictRow*>& vs, const std::
     return s + ": <strong class=\"NOT\">" + t + "</strong>";
 }
 
-// A compare check's verdicts for the sentence: the whole image's where it has them, else its regions'.
-std::vector<const VerdictRow*> sentenceVerdicts(const CheckOutcome& o, const std::string& a, const std::string& b) {
-    std::vector<const VerdictRow*> whole, any;
-    for (const auto& v : o.verdicts) {
-        if (v.a != a || v.b != b) continue;
-        any.push_back(&v);
-        if (v.region.empty()) whole.push_back(&v);
-    }
-    return whole.empty() ? any : whole;
+// "holds", "refuted" or "undecided", marked up.
+std::string statusWord(CheckStatus status) {
+    const char* word = status == CheckStatus::Pass ? "holds" : status == CheckStatus::Fail ? "refuted" : "undecided";
+    const char* cls = status == CheckStatus::Pass ? "PASS" : status == CheckStatus::Fail ? "FAIL" : "NOT";
+    return std::string("<strong class=\"") + cls + "\">" + word + "</strong>";
 }
 
-std::string basisText(const Check& k) {
-    if (k.type != CheckType::Compare) return "";
-    return k.flipMetric ? "by mean FLIP" : k.equalTime ? "at equal CPU time" : "per sample";
-}
-
-// One clause per compared pair of a check: "the study's Poisson disk (poisson-seed) per sample: as good as …".
+// The clauses of a check as its kind states them (check_kind.h), in the report's words.
 std::string checkClauses(const CheckOutcome& o) {
-    const Check& k = o.check;
-    if (k.type != CheckType::Compare) {
-        // An ordering by efficiency (equal_time / equal_spp, on plain MSE or FLIP): the order it claims, where.
-        const char* word = o.status == CheckStatus::Pass   ? "holds"
-                           : o.status == CheckStatus::Fail ? "refuted"
-                                                           : "undecided";
-        const char* cls = o.status == CheckStatus::Pass ? "PASS" : o.status == CheckStatus::Fail ? "FAIL" : "NOT";
-        std::string order;
-        for (const auto& p : k.order) order += (order.empty() ? "" : " ahead of ") + patternHeader(p);
-        if (order.empty()) return html(o.claim) + ": <strong class=\"" + cls + "\">" + word + "</strong>";
-        return order + (k.type == CheckType::EqualTime ? " at equal CPU time" : " per sample") + " in " +
-               html(k.scene) + (k.region.empty() ? "" : ", " + html(k.region)) +
-               (k.flipMetric ? " (mean FLIP)" : " (the study's plain MSE)") + ": <strong class=\"" + cls + "\">" +
-               word + "</strong>";
-    }
-    std::string s;
-    for (size_t i = 0; i < k.patterns.size(); ++i)
-        for (size_t j = i + 1; j < k.patterns.size(); ++j) {
-            const auto vs = sentenceVerdicts(o, k.patterns[i], k.patterns[j]);
-            if (vs.empty()) continue;
-            s += (s.empty() ? "" : "; ") + patternLabel(k.patterns[i]) + " " + basisText(k) + " is " +
-                 verdictSummary(vs, k.patterns[j], !k.study.empty());
-        }
-    return s;
+    static const SentenceWords words{html, patternHeader, patternLabel, statusWord, verdictSummary};
+    if (o.check.kind->sentence) return o.check.kind->sentence(o, words);
+    return html(o.claim) + ": " + statusWord(o.status);
 }
 
 // Stratified against independent on every scene's whole image, per sample and at equal time, from the rows

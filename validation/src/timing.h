@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "checks.h"
+#include "checks.h" // CheckStatus
 #include "results.h"
 
 namespace stipple::validation {
@@ -36,9 +36,5 @@ CheckStatus ratioVerdict(const PairedRatio& r, double bound);
 // Equivalence within [lo, hi] (Schuirmann's two one-sided tests): PASS when the 90% interval lies inside the
 // margin; FAIL when the 95% interval lies wholly outside it; NOT SEPARATED otherwise.
 CheckStatus equivalenceVerdict(const PairedRatio& r, double lo, double hi);
-
-// The time_ratio check: verdict on CPU seconds, with the wall-clock ratio and its interval beside it.
-void evaluateTimeRatio(const Check& check, const Matrix& matrix, const std::vector<ResultRow>& rows,
-                       CheckOutcome& outcome);
 
 } // namespace stipple::validation

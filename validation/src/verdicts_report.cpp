@@ -130,7 +130,7 @@ const VerdictRow* studyVerdict(const std::vector<CheckOutcome>& outcomes, const 
                                const std::string& scene, const std::string& region, const std::string& p,
                                const std::string& q, bool& flipped, std::string& statement) {
     for (const auto& o : outcomes) {
-        if (o.check.type != CheckType::Compare || o.check.study.empty()) continue;
+        if (o.check.study.empty()) continue;
         for (const auto& v : o.verdicts) {
             if (v.equalTime != col.equalTime || v.flip != col.flip || v.scene != scene || v.region != region) continue;
             if ((v.a == p && v.b == q) || (v.a == q && v.b == p)) {
@@ -163,16 +163,20 @@ std::string studyTableHtml(const ReportInputs& in) {
     std::vector<std::pair<std::string, std::string>> pairs;
     std::vector<std::string> statements[3];
     for (const auto& o : in.outcomes) {
-        if (o.check.type != CheckType::Compare || o.check.study.empty() || o.check.patterns.size() != 2) continue;
-        const auto& k = o.check;
+        // A study-tagged check that compared one pair (its verdict rows share it, and their basis and metric).
+        if (o.check.study.empty() || o.verdicts.empty()) continue;
+        const VerdictRow& first = o.verdicts.front();
+        if (std::any_of(o.verdicts.begin(), o.verdicts.end(),
+                        [&](const VerdictRow& v) { return v.a != first.a || v.b != first.b; }))
+            continue;
         bool known = false;
         for (const auto& [p, q] : pairs)
-            known |= (p == k.patterns[0] && q == k.patterns[1]) || (p == k.patterns[1] && q == k.patterns[0]);
-        if (!known) pairs.emplace_back(k.patterns[0], k.patterns[1]);
+            known |= (p == first.a && q == first.b) || (p == first.b && q == first.a);
+        if (!known) pairs.emplace_back(first.a, first.b);
         for (int c = 0; c < 3; ++c)
-            if (kStudyColumns[c].equalTime == k.equalTime && kStudyColumns[c].flip == k.flipMetric &&
-                std::find(statements[c].begin(), statements[c].end(), k.study) == statements[c].end())
-                statements[c].push_back(k.study);
+            if (kStudyColumns[c].equalTime == first.equalTime && kStudyColumns[c].flip == first.flip &&
+                std::find(statements[c].begin(), statements[c].end(), o.check.study) == statements[c].end())
+                statements[c].push_back(o.check.study);
     }
     if (pairs.empty()) return "";
     std::ostringstream o;
