@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "check_kind.h"
-#include "efficiency.h"
-#include "efficiency_claims.h"
+#include "matrix/check_kind.h"
+#include "claims/efficiency.h"
+#include "claims/efficiency_claims.h"
 
 using namespace stipple::validation;
 

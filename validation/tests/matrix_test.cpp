@@ -9,8 +9,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "check_kind.h"
-#include "matrix.h"
+#include "matrix/check_kind.h"
+#include "matrix/matrix.h"
 #include "test_vocabulary.h"
 
 using namespace stipple::validation;

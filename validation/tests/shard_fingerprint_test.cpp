@@ -9,8 +9,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "results.h"
-#include "shard_fingerprint.h"
+#include "run/results.h"
+#include "run/shard_fingerprint.h"
 #include "test_vocabulary.h"
 
 using namespace stipple::validation;

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "check_kind.h"
-#include "timing.h"
+#include "matrix/check_kind.h"
+#include "claims/timing.h"
 
 using namespace stipple::validation;
 
