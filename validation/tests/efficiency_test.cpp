@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "claims/checks.h"
 #include "matrix/check_kind.h"
 #include "claims/efficiency.h"
 #include "claims/efficiency_claims.h"

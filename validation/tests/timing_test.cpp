@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "claims/checks.h"
 #include "matrix/check_kind.h"
 #include "claims/timing.h"
 

@@ -17,6 +17,15 @@ const char* checkStatusName(CheckStatus status) {
     return "?";
 }
 
+CheckOutcome evaluateCheck(const Check& k, const CheckInputs& in) {
+    CheckOutcome o;
+    o.check = k;
+    k.kind->evaluate(k, in, o);
+    o.failsRun = (o.status == CheckStatus::Fail && k.failFails) ||
+                 (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
+    return o;
+}
+
 std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector<ResultRow>& rows,
                                          const std::vector<CellAggregate>& cells, const std::vector<SlopeFit>& slopes) {
     const CheckInputs inputs{matrix, rows, cells, slopes};

@@ -38,6 +38,16 @@ struct CheckOutcome {
     std::vector<VerdictRow> verdicts; // compare checks: one per scene × region × pair
 };
 
+// What a check is evaluated on.
+struct CheckInputs {
+    const Matrix& matrix;
+    const std::vector<ResultRow>& rows;
+    const std::vector<CellAggregate>& cells; // per scene × pattern × spp
+    const std::vector<SlopeFit>& slopes;     // per scene × pattern
+};
+
+// One check by its kind (matrix/check_kind.h): the outcome, and whether it fails the run.
+CheckOutcome evaluateCheck(const Check& check, const CheckInputs& inputs);
 std::vector<CheckOutcome> evaluateChecks(const Matrix& matrix, const std::vector<ResultRow>& rows,
                                          const std::vector<CellAggregate>& cells, const std::vector<SlopeFit>& slopes);
 

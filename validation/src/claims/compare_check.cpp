@@ -4,6 +4,7 @@
 // per sample or at equal CPU time, on the relative squared error or mean FLIP (comparison_claims.h), judged
 // EQUIVALENT / BETTER / WORSE / NOT SEPARATED and then against what the check expects.
 #include "matrix/check_kind.h"
+#include "claims/checks.h"
 #include "claims/comparison_claims.h"
 #include "metrics/image_metrics.h"
 #include "base/text.h"

@@ -5,6 +5,7 @@
 // FLIP — the claimed order judged pair by pair (PASS / FAIL / NOT SEPARATED), and the study's own conclusion
 // printed beside the measured one.
 #include "matrix/check_kind.h"
+#include "claims/checks.h"
 #include "claims/efficiency.h"
 #include "claims/efficiency_claims.h"
 #include "base/text.h"

@@ -3,6 +3,7 @@
 // The ordering check: in every named scene and at every spp from spp_min up, the patterns' RMS errors in the
 // claimed order, best first, each pair separated with 95% confidence.
 #include "matrix/check_kind.h"
+#include "claims/checks.h"
 #include "base/text.h"
 
 #include <cmath>

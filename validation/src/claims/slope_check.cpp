@@ -3,6 +3,7 @@
 // The slope check: a pattern's convergence rate, the slope of log RMS against log spp (the fit of results.h), equal
 // to the expected one within a tolerance, in every named scene.
 #include "matrix/check_kind.h"
+#include "claims/checks.h"
 #include "base/text.h"
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // Copyright 2026 The stipple authors
 // The time_ceiling check: no render of a named scene (any cell, any seed) took longer than a number of wall seconds.
 #include "matrix/check_kind.h"
+#include "claims/checks.h"
 #include "base/text.h"
 
 namespace stipple::validation {

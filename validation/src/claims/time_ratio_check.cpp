@@ -4,6 +4,7 @@
 // (timing.h), at most a bound (max) or equal within a margin (two one-sided tests), with the wall-clock ratio
 // beside.
 #include "matrix/check_kind.h"
+#include "claims/checks.h"
 #include "base/text.h"
 #include "claims/timing.h"
 

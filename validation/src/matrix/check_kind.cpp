@@ -163,13 +163,4 @@ Json checkClaimJson(const Check& c) {
     return j;
 }
 
-CheckOutcome evaluateCheck(const Check& k, const CheckInputs& in) {
-    CheckOutcome o;
-    o.check = k;
-    k.kind->evaluate(k, in, o);
-    o.failsRun = (o.status == CheckStatus::Fail && k.failFails) ||
-                 (o.status == CheckStatus::NotSeparated && k.notSeparatedFails);
-    return o;
-}
-
 } // namespace stipple::validation

@@ -16,19 +16,17 @@
 #include <utility>
 #include <vector>
 
-#include "claims/checks.h"
 #include "base/fields.h"
 #include "matrix/matrix_reader.h"
 
 namespace stipple::validation {
 
-// What a check is evaluated on.
-struct CheckInputs {
-    const Matrix& matrix;
-    const std::vector<ResultRow>& rows;
-    const std::vector<CellAggregate>& cells; // per scene × pattern × spp
-    const std::vector<SlopeFit>& slopes;     // per scene × pattern
-};
+// What a kind's evaluation and sentence take and give: the claims' types (claims/checks.h), which a kind's file
+// includes. The matrix reader needs only their names.
+struct CheckInputs;
+struct CheckOutcome;
+struct VerdictRow;
+enum class CheckStatus;
 
 // Reading one check: the YAML reader and the matrix read so far (its scenes, patterns and spp, which a check's
 // values must name).
@@ -87,7 +85,7 @@ struct CheckKind {
     std::string (*sentence)(const CheckOutcome&, const SentenceWords&) = nullptr;
 };
 
-// ---- the registry (check_registry.cpp) ---------------------------------------------------------------------------
+// ---- the registry (claims/check_registry.cpp) ---------------------------------------------------------------------------
 
 // The kinds in the order the matrix format documents them.
 const std::vector<const CheckKind*>& checkKinds();
@@ -103,7 +101,6 @@ Check parseCheck(const std::string& text, const std::string& path, const Matrix&
 // The check as the fields that define its claim: its type, then every fingerprinted key's resolved value in the
 // kind's order (its place in the file is left out: moving a line changes no claim).
 Json checkClaimJson(const Check& check);
-CheckOutcome evaluateCheck(const Check& check, const CheckInputs& inputs);
 
 // ---- building a kind's keys --------------------------------------------------------------------------------------
 

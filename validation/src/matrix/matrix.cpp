@@ -6,7 +6,7 @@
 #include "matrix/external_command.h"
 #include "matrix/matrix_reader.h"
 
-#include "report/report.h"
+#include "base/file_names.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "report/report.h"
+#include "base/file_names.h"
 
 namespace stipple::validation {
 

@@ -13,7 +13,7 @@
 #include <stipple/render/image_io.h>
 
 #include "metrics/regions.h"
-#include "report/report.h"
+#include "base/file_names.h"
 #include "metrics/statistics.h"
 #include "base/text.h"
 #include "perceptual/study_key.h"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "report/report.h"
+#include "report/report_inputs.h"
 #include "perceptual/study_analysis.h"
 
 namespace stipple::validation {

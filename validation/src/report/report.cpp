@@ -264,21 +264,6 @@ std::string cellTable(const std::string& dir, const Matrix& m, const std::vector
 
 } // namespace
 
-std::string safeName(const std::string& name) {
-    std::string s;
-    for (char c : name) s += (std::isalnum((unsigned char)c) || c == '-' || c == '_') ? c : '_';
-    return s;
-}
-
-std::string cropFile(const std::string& scene, const std::string& pattern) {
-    return "crops/" + safeName(scene) + "-" + safeName(pattern) + ".png";
-}
-
-std::string cellExrFile(const std::string& scene, const std::string& pattern, uint32_t spp, uint64_t seed) {
-    return "exr/" + safeName(scene) + "-" + safeName(pattern) + "-" + std::to_string(spp) + "spp-seed" +
-           std::to_string(seed) + ".exr";
-}
-
 std::string summaryTable(const Matrix& m, const std::vector<CellAggregate>& cells, uint32_t spp) {
     std::string s = fmt("%-16s %-13s %6s %12s %10s %10s %10s %12s\n", "scene", "pattern", "spp", "mean RMS", "±95%",
                         "render s", "sampler s", "1/(MSE·s)");

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "claims/checks.h"
-#include "report/report.h"
+#include "report/report_inputs.h"
 
 namespace stipple::validation {
 

@@ -2,6 +2,7 @@
 // Copyright 2026 The stipple authors
 
 #include "report/verdicts_report.h"
+#include "base/file_names.h"
 #include "base/text.h"
 
 #include <algorithm>

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "report/report.h"
+#include "report/report_inputs.h"
 
 namespace stipple::validation {
 

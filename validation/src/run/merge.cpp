@@ -5,7 +5,7 @@
 
 #include "metrics/image_metrics.h"
 #include "metrics/regions.h"
-#include "report/report.h"
+#include "base/file_names.h"
 #include "run/shard_fingerprint.h"
 
 #include <algorithm>

@@ -19,7 +19,7 @@
 #include "run/file_lock.h"
 #include "metrics/image_metrics.h"
 #include "run/reference_integrity.h"
-#include "report/report.h"
+#include "base/file_names.h"
 #include "base/fields.h"
 #include "run/results.h"
 

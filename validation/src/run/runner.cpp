@@ -5,7 +5,6 @@
 #include "base/text.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,21 +13,20 @@
 #include <stdlib.h>
 
 #include <stipple/render/renderer.h>
-#include <stipple/render/temp_files.h>
 
 #include "metrics/image_metrics.h"
 #include "run/progress.h"
+#include "run/cell_renderer.h"
 #include "run/reference_cache.h"
 #include "metrics/regions.h"
 #include "metrics/error_spectrum.h"
 #include "metrics/flip.h"
-#include "report/report.h"
+#include "base/file_names.h"
 #include "run/run_fingerprint.h"
 
 namespace stipple::validation {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 std::vector<CellGroup> shardGroups(const Matrix& m, int shardIndex, int shardCount) {
     std::vector<CellGroup> groups;
@@ -51,23 +49,6 @@ void writeCrop(const std::string& reportDir, const std::string& scene, const std
     fs::create_directory(fs::path(reportDir) / "crops"); // never its parent: see writeReport
     render::writePng((fs::path(reportDir) / cropFile(scene, column)).string(),
                      cropImage(image, x, y, size, size, crop.scale));
-}
-
-// Untimed warm-up: a tiny render per pattern × spp fills whatever the sampler caches per N, so the timed cells
-// measure steady state. Returns its seconds (reported per scene).
-double warmUp(const render::Scene& scene, const render::RenderOptions& base, const Matrix& m) {
-    const auto start = Clock::now();
-    for (uint32_t spp : m.spp)
-        for (const auto& pattern : m.patterns) {
-            render::RenderOptions o = base;
-            o.pattern = pattern;
-            o.spp = spp;
-            o.seed = 0x5eed;
-            o.width = std::min(base.width, 8);
-            o.height = std::min(base.height, 8);
-            scene.render(o);
-        }
-    return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 // One cell × seed: its render against the reference, the reference's noise floor removed.
@@ -138,31 +119,6 @@ void writeRegionErrorMaps(const std::string& reportDir, const MatrixScene& scene
     }
 }
 
-// The matrix's scene loaded, or an error naming the matrix; a scene marked unloadable by preflight fails the same.
-std::unique_ptr<render::Scene> loadMatrixScene(const MatrixScene& ms, const Matrix& m, const RunOptions& opt) {
-    if (auto bad = opt.unloadable.find(ms.name); bad != opt.unloadable.end())
-        throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + bad->second);
-    try {
-        return render::Scene::load(ms.path);
-    } catch (const std::exception& e) {
-        throw std::runtime_error(std::string("cannot load the scene (matrix ") + m.path + "): " + e.what());
-    }
-}
-
-SceneInfo sceneInfo(const MatrixScene& ms, const render::Scene& scene, const render::RenderOptions& base) {
-    SceneInfo info;
-    info.name = ms.name;
-    info.file = ms.file;
-    info.contentHash = scene.contentHash();
-    info.integrator = base.integrator;
-    info.width = base.width;
-    info.height = base.height;
-    info.triangles = scene.triangleCount();
-    info.loadSeconds = scene.loadSeconds();
-    info.buildSeconds = scene.buildSeconds();
-    return info;
-}
-
 // Perceptual error and the error's spectrum, after the timed render, and the error per region. FLIP is computed
 // on the whole image (its filters see a region's surroundings) and averaged per region.
 void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& image, const MatrixScene& ms,
@@ -194,54 +150,6 @@ void addImageMetrics(ResultRow& row, const Reference& ref, const render::Image& 
         for (double v : blockSums(flip.flip, flip.width, px.x, px.y, px.w, px.h)) row.regionBlockFlip.push_back(v);
     }
 }
-
-// A scene of an external renderer: the program, a private folder for the images it writes, and what the report
-// and the fingerprint say about it.
-struct ExternalScene {
-    const MatrixScene& ms;
-    // The work folder: made only once the command line's permission is checked (a refused scene leaves none),
-    // named and registered as a temporary in the cache folder, so a signal removes it and the next run's sweep
-    // finds it after a SIGKILL.
-    render::TempPath work;
-    ExternalRenderer renderer;
-    ExternalScene(const MatrixScene& scene, const RendererPermission& permission, const std::string& cacheDir)
-        : ms(scene), work(permitted(scene, permission, cacheDir)), renderer(scene, permission, work.path()) {
-        render::SignalHold hold; // made and registered, or not at all
-        std::error_code ec;
-        if (!fs::create_directory(work.path(), ec) || ec)
-            throw std::runtime_error("cannot make a work folder for an external renderer (" + work.path() +
-                                     "): " + (ec ? ec.message() : std::string("it exists")));
-    }
-    ExternalScene(const ExternalScene&) = delete;
-    ExternalScene& operator=(const ExternalScene&) = delete;
-
-    static std::string permitted(const MatrixScene& scene, const RendererPermission& permission,
-                                 const std::string& cacheDir) {
-        if (const std::string why = checkRendererPermission(scene, permission); !why.empty())
-            throw std::runtime_error(why);
-        std::error_code ec;
-        fs::create_directories(cacheDir, ec);
-        return fs::absolute(fs::path(cacheDir) / "external-work").lexically_normal().string();
-    }
-    render::RenderOptions options(int threads) const {
-        render::RenderOptions o;
-        o.width = ms.width;
-        o.height = ms.height;
-        o.threads = threads;
-        return o;
-    }
-    SceneInfo info(const render::RenderOptions& base) const {
-        SceneInfo info;
-        info.name = ms.name;
-        info.file = ms.file;
-        info.contentHash = renderer.contentHash();
-        info.integrator = renderer.description();
-        info.width = base.width;
-        info.height = base.height;
-        return info;
-    }
-    SceneFingerprint fingerprint(uint32_t referenceSpp) const { return externalFingerprint(ms, referenceSpp); }
-};
 
 } // namespace
 
@@ -277,35 +185,22 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             progress.pause();
             progress.note("loading " + ms.path);
             // The scene in-process (stipple-render's library) or through its external renderer.
-            std::unique_ptr<render::Scene> scene;
-            std::optional<ExternalScene> external;
-            if (ms.renderer.empty())
-                scene = loadMatrixScene(ms, m, opt);
-            else
-                external.emplace(ms, opt.renderer, opt.cacheDir);
-            const render::RenderOptions base =
-                scene ? resolveRenderOptions(ms, *scene, threads) : external->options(threads);
-            auto renderCell = [&](const render::RenderOptions& o) {
-                return scene ? scene->render(o) : external->renderer.render(o);
-            };
-
-            SceneInfo info = scene ? sceneInfo(ms, *scene, base) : external->info(base);
+            const std::unique_ptr<CellRenderer> scene =
+                makeCellRenderer(ms, m, opt.unloadable, opt.renderer, opt.cacheDir);
+            const render::RenderOptions base = scene->options(threads);
+            SceneInfo info = scene->info(base);
 
             render::RenderOptions refOptions = base;
             refOptions.pattern = m.reference.pattern;
             refOptions.spp = ms.referenceSpp ? ms.referenceSpp : m.reference.spp;
             refOptions.seed = m.reference.seed;
-            fingerprinted[si] = scene ? describeScene(*scene, base, refOptions.spp)
-                                      : external->fingerprint(refOptions.spp);
+            fingerprinted[si] = scene->fingerprint(base, refOptions.spp);
             progress.note(fmt("reference for %s: %s %u spp seed %llu at %dx%d%s", ms.name.c_str(),
                               refOptions.pattern.c_str(), refOptions.spp, (unsigned long long)refOptions.seed,
-                              base.width, base.height,
-                              scene ? (" (key " + referenceKey(*scene, refOptions) + ")").c_str()
-                                    : (" by " + info.integrator).c_str()));
+                              base.width, base.height, scene->referenceSource(refOptions).c_str()));
             progress.resume();
             progress.beginTask("reference for " + ms.name, refOptions.spp);
-            Reference ref = scene ? loadOrRenderReference(*scene, ms.file, refOptions, opt.cacheDir)
-                                  : external->renderer.reference(refOptions, m.seeds, opt.cacheDir);
+            Reference ref = scene->reference(refOptions, m.seeds, opt.cacheDir);
             progress.endTask(!ref.fromCache);
             if (!ref.cacheProblem.empty())
                 progress.note("  cached entry " + ref.key + " did not verify (" + ref.cacheProblem +
@@ -329,7 +224,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
             std::vector<double> regionFloors;
             for (const Region& region : ms.regions) regionFloors.push_back(regionNoiseFloor(ref.variance, region));
 
-            info.warmupSeconds = scene ? warmUp(*scene, base, m) : 0; // a program's start-up is part of its time
+            info.warmupSeconds = scene->warmUp(base, m);
 
             std::vector<std::pair<std::string, render::Image>> cropRenders; // the crop group's, for error maps
             for (size_t gi = 0; gi < mine.size(); ++gi) {
@@ -341,7 +236,7 @@ Results runMatrix(const Matrix& m, const RunOptions& opt) {
                     o.pattern = pattern;
                     o.spp = g.spp;
                     o.seed = g.seed;
-                    render::RenderResult r = renderCell(o);
+                    render::RenderResult r = scene->render(o);
                     ResultRow row = measureRow(ms.name, o, r, ref, info.noiseFloor);
                     addImageMetrics(row, ref, r.image, ms, regionFloors);
                     results.rows.push_back(row);

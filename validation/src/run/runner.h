@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
-// Runs a matrix's cells in-process through the renderer library (or, for a scene with an external renderer, through
-// that program: external_renderer.h): each scene is loaded once, its reference
+// Runs a matrix's cells through each scene's CellRenderer (cell_renderer.h: the renderer library in-process, or
+// the scene's external program): each scene is loaded once, its reference
 // made or read from the cache, then every (spp, seed) group renders all patterns back to back (interleaved,
 // order rotated per group) so slow drifts of a shared machine hit every pattern alike.
 #pragma once
