@@ -2,10 +2,10 @@
 // Copyright 2026 The stipple authors
 // What a check kind is to the matrix reader, the fingerprint, the evaluation and the report: one CheckKind.
 //
-// A kind is defined once, in its own source file (*_check.cpp), as a CheckKind: its name, its keys (each with how it
-// is read, its default and how the resolved value is spelled), the rules between its keys, its evaluation and how
-// the report's sentences state it. check_registry.cpp lists the kinds. The reader, the shard fingerprint and
-// results.json all walk a kind's key list, so a key read is a key fingerprinted; nothing else names a kind.
+// A kind is defined once, in its own source file (claims/*_check.cpp), as a CheckKind: its name, its keys (each with
+// how it is read, its default and how the resolved value is spelled), the rules between its keys, its evaluation and
+// how the report's sentences state it. claims/check_registry.cpp lists the kinds. The reader and the shard
+// fingerprint both walk a kind's key list, so a key read is a key fingerprinted; nothing else names a kind.
 #pragma once
 
 #include <functional>

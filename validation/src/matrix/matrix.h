@@ -71,7 +71,7 @@ struct CheckParams {
     virtual ~CheckParams() = default;
 };
 
-// A claim of the matrix: its kind (check_kind.h; the registry in check_registry.cpp lists them) and what the
+// A claim of the matrix: its kind (check_kind.h; claims/check_registry.cpp lists them) and what the
 // kind's keys read. The keys several kinds share are members here; a kind's own live in `params`.
 struct Check {
     const CheckKind* kind = nullptr;
