@@ -7,7 +7,7 @@
 // argument count, its arguments without placeholders byte for byte, and never passes a value that is empty,
 // starts with '-' or holds a control character (it throws instead). Any other exception, a crash or a sanitizer
 // report is a finding.
-#include "external_command.h"
+#include "matrix/external_command.h"
 
 #include <cstdint>
 #include <stdexcept>

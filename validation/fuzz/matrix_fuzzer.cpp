@@ -4,7 +4,7 @@
 // is parsed as the text of "fuzz/matrix.yaml" through parseMatrix (the same code loadMatrix runs on a file).
 // Expected: a Matrix that keeps the documented invariants, or a MatrixError whose message starts with the file
 // name and a position; any other exception, a crash or a sanitizer report is a finding.
-#include "matrix.h"
+#include "matrix/matrix.h"
 #include "../tests/test_vocabulary.h"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 // std::runtime_error naming the file; memory stays bounded by the expected size whatever the header claims. Any
 // other exception, a crash or a sanitizer report is a finding. (EXR goes through OIIO, fuzzed by its authors;
 // the run compares its size with the matrix's after reading.)
-#include "pfm_image.h"
+#include "metrics/pfm_image.h"
 
 #include <unistd.h>
 

@@ -4,7 +4,7 @@
 // parsed and verified against the key, size and pixel checksums of a fixed 3x2 reference. Expected: a
 // Provenance or a std::runtime_error; an entry verifies only when its key material, size and both checksums are
 // exactly the reference's. Any other exception, a crash or a sanitizer report is a finding.
-#include "reference_integrity.h"
+#include "run/reference_integrity.h"
 
 #include <cstdint>
 #include <stdexcept>

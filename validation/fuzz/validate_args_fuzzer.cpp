@@ -3,7 +3,7 @@
 // validate_args_fuzzer.cpp — libFuzzer harness of stipple-validate's command-line parser. The input is split at
 // NUL bytes into arguments (at most 64). Expected: Args within the documented ranges, or a UsageError with a
 // message; any other exception, a crash or a sanitizer report is a finding.
-#include "cli_args.h"
+#include "matrix/cli_args.h"
 
 #include <stipple/render/input_limits.h>
 #include <stipple/testing/fuzz_arguments.h>

@@ -11,12 +11,12 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "baseline.h"
-#include "checks.h"
-#include "identical_renders.h"
-#include "image_metrics.h"
-#include "report.h"
-#include "study_answers.h"
+#include "claims/baseline.h"
+#include "claims/checks.h"
+#include "claims/identical_renders.h"
+#include "metrics/image_metrics.h"
+#include "report/report.h"
+#include "report/study_answers.h"
 #include "test_vocabulary.h"
 
 #include <stipple/testing/scratch_folder.h>

@@ -7,8 +7,10 @@
 
 #include <cmath>
 
-#include "efficiency.h"
-#include "efficiency_claims.h"
+#include "claims/checks.h"
+#include "matrix/check_kind.h"
+#include "claims/efficiency.h"
+#include "claims/efficiency_claims.h"
 
 using namespace stipple::validation;
 
@@ -81,15 +83,14 @@ BOOST_AUTO_TEST_CASE(equal_time_verdicts) {
     scene.file = scene.path = "s.yaml";
     m.scenes.push_back(scene);
     m.patterns = {"fast", "slow", "noisy"};
+    m.spp = {16};
+    const std::vector<CellAggregate> cells;
+    const std::vector<SlopeFit> slopes;
     auto run = [&](std::vector<std::string> order) {
-        Check k;
-        k.type = CheckType::EqualTime;
-        k.scene = "s";
-        k.spp = 16;
-        k.order = order;
-        k.study = "fast first";
-        CheckOutcome o;
-        evaluateEqualTime(k, m, rows, o);
+        const Check k = parseCheck("{ type: equal_time, scene: s, spp: 16, order: [" + order[0] + ", " + order[1] +
+                                       "], study: fast first }",
+                                   "check.yaml", m, MatrixVocabulary{m.patterns, {}});
+        const CheckOutcome o = evaluateCheck(k, {m, rows, cells, slopes});
         BOOST_TEST_MESSAGE(formatOutcome(o));
         return o;
     };

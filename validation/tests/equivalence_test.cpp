@@ -11,8 +11,8 @@
 #include <cmath>
 #include <random>
 
-#include "comparison_claims.h"
-#include "equivalence.h"
+#include "claims/comparison_claims.h"
+#include "metrics/equivalence.h"
 
 using namespace stipple::validation;
 

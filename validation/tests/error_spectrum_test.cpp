@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "error_spectrum.h"
+#include "metrics/error_spectrum.h"
 
 using namespace stipple::validation;
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-#include "flip.h"
+#include "metrics/flip.h"
 
 using namespace stipple::validation;
 

@@ -10,7 +10,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "image_metrics.h"
+#include "metrics/image_metrics.h"
 
 using namespace stipple::validation;
 

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <regex>
 
-#include "matrix.h"
+#include "matrix/matrix.h"
 #include "test_vocabulary.h"
 
 #include <stipple/testing/scratch_folder.h>

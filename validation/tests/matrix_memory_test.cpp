@@ -15,7 +15,7 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "matrix.h"
+#include "matrix/matrix.h"
 #include "test_vocabulary.h"
 
 #include <stipple/testing/scratch_folder.h>

@@ -9,7 +9,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "matrix.h"
+#include "matrix/check_kind.h"
+#include "matrix/matrix.h"
 #include "test_vocabulary.h"
 
 #include <stipple/testing/scratch_folder.h>
@@ -82,11 +83,11 @@ BOOST_AUTO_TEST_CASE(good_matrix_reads) {
     BOOST_CHECK_EQUAL(m.scenes[1].referenceSpp, 0u); // 0: the matrix's reference spp
     BOOST_CHECK_EQUAL(m.reference.pattern, "independent");
     BOOST_REQUIRE_EQUAL(m.checks.size(), 4u);
-    BOOST_CHECK(m.checks[0].type == CheckType::Ordering);
+    BOOST_CHECK_EQUAL(m.checks[0].kind->name, std::string("ordering"));
     BOOST_CHECK(!m.checks[0].notSeparatedFails);
     BOOST_CHECK_EQUAL(m.checks[0].where, f.path() + ":12:5");
-    BOOST_CHECK(m.checks[2].type == CheckType::TimeRatio);
-    BOOST_CHECK_EQUAL(m.checks[2].spp, 16u); // default: the largest
+    BOOST_CHECK_EQUAL(m.checks[2].kind->name, std::string("time_ratio"));
+    BOOST_CHECK_EQUAL(checkClaimJson(m.checks[2])["spp"], 16u); // default: the largest
     BOOST_CHECK_EQUAL(m.checks[3].scene, "all");
 }
 
@@ -143,7 +144,7 @@ BOOST_AUTO_TEST_CASE(a_region_every_scene_has_serves_scene_all) {
     const Matrix m = parseMatrix(text + claim, f.path(), test::kVocabulary);
     BOOST_REQUIRE_EQUAL(m.checks.size(), 5u);
     BOOST_CHECK_EQUAL(m.checks[4].scene, "all");
-    BOOST_CHECK_EQUAL(m.checks[4].region, "shadow");
+    BOOST_CHECK_EQUAL(checkClaimJson(m.checks[4])["region"], "shadow");
     expectError(f,
                 replaced(text, "name: veach, regions: [{ name: shadow", "name: veach, regions: [{ name: floor") + claim,
                 {":17:", "region 'shadow' is not a region of every scene", "veach lack it"});
@@ -173,12 +174,12 @@ BOOST_AUTO_TEST_CASE(regions_and_study_claims) {
     BOOST_CHECK_EQUAL(m.scenes[0].regions[0].name, "shade");
     BOOST_CHECK_CLOSE(m.scenes[0].regions[0].x1, 0.6, 1e-12);
     BOOST_CHECK(!m.checks[2].notSeparatedFails); // time_ratio: an undecided interval does not fail the run
-    BOOST_CHECK(m.checks[4].type == CheckType::EqualTime);
+    BOOST_CHECK_EQUAL(m.checks[4].kind->name, std::string("equal_time"));
     BOOST_CHECK_EQUAL(m.checks[4].study, "stratified first");
-    BOOST_CHECK_EQUAL(m.checks[4].spp, 16u);
-    BOOST_CHECK(m.checks[5].type == CheckType::EqualSpp);
-    BOOST_CHECK(m.checks[5].flipMetric);
-    BOOST_CHECK_EQUAL(m.checks[5].region, "shade");
+    BOOST_CHECK_EQUAL(checkClaimJson(m.checks[4])["spp"], 16u);
+    BOOST_CHECK_EQUAL(m.checks[5].kind->name, std::string("equal_spp"));
+    BOOST_CHECK_EQUAL(checkClaimJson(m.checks[5])["metric"], "flip");
+    BOOST_CHECK_EQUAL(checkClaimJson(m.checks[5])["region"], "shade");
 
     expectError(f, replaced(withRegions, "[0.1, 0.5, 0.6, 1.0]", "[0.7, 0.5, 0.6, 1.0]"),
                 {f.path() + ":6:", "0 ≤ x0 < x1 ≤ 1"});

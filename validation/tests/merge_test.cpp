@@ -11,9 +11,9 @@
 #include <functional>
 #include <unistd.h>
 
-#include "merge.h"
-#include "results.h"
-#include "shard_fingerprint.h"
+#include "run/merge.h"
+#include "run/results.h"
+#include "run/shard_fingerprint.h"
 
 #include <stipple/testing/scratch_folder.h>
 

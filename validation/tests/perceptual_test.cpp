@@ -18,7 +18,7 @@
 
 #include "perceptual/study_analysis.h"
 #include "perceptual/thurstone.h"
-#include "matrix.h"
+#include "matrix/matrix.h"
 #include "perceptual/votes.h"
 
 #include <stipple/testing/scratch_folder.h>

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "results.h"
-#include "shard_fingerprint.h"
+#include "run/results.h"
+#include "run/shard_fingerprint.h"
 #include "test_vocabulary.h"
 
 #include <stipple/testing/scratch_folder.h>
@@ -97,6 +97,43 @@ BOOST_FIXTURE_TEST_CASE(comparison_claims_fields_differ, Fixture) {
         }
     }
     BOOST_TEST(!firstDifference(a, withCheck(base)));
+}
+
+// The fingerprint walks the key list each kind reads: a key that changes a claim changes the fingerprint, whatever
+// the kind (not_separated was once read for four kinds and fingerprinted for one).
+BOOST_FIXTURE_TEST_CASE(every_claim_key_is_fingerprinted, Fixture) {
+    auto withCheck = [&](const std::string& check) {
+        Matrix m = parseMatrix("scenes:\n  - { file: box.yaml, name: box, width: 16 }\n"
+                               "patterns: [independent, stratified]\nspp: [1, 4]\nseeds: 4\n"
+                               "reference: { spp: 16, seed: 7 }\nchecks:\n  - " + check + "\n",
+                               (dir / "m.yaml").string(), test::kVocabulary);
+        return matrixFingerprint(m);
+    };
+    const std::pair<std::string, std::string> variants[] = {
+        {"{ type: ordering, scene: box, order: [stratified, independent] }",
+         "{ type: ordering, scene: box, order: [stratified, independent], not_separated: pass }"},
+        {"{ type: time_ratio, numerator: stratified, denominator: independent, max: 2 }",
+         "{ type: time_ratio, numerator: stratified, denominator: independent, max: 2, not_separated: fail }"},
+        {"{ type: equal_time, scene: box, order: [stratified, independent] }",
+         "{ type: equal_time, scene: box, order: [stratified, independent], not_separated: fail }"},
+        {"{ type: equal_spp, scene: box, order: [stratified, independent] }",
+         "{ type: equal_spp, scene: box, order: [stratified, independent], spp: 1 }"},
+        {"{ type: compare, patterns: [independent, stratified] }",
+         "{ type: compare, patterns: [independent, stratified], not_separated: fail }"},
+        {"{ type: slope, scene: box, pattern: independent, expected: -0.5, tolerance: 0.1 }",
+         "{ type: slope, scene: box, pattern: independent, expected: -0.5, tolerance: 0.2 }"},
+        {"{ type: time_ceiling, seconds: 30 }", "{ type: time_ceiling, scene: box, seconds: 30 }"},
+    };
+    for (const auto& [a, b] : variants) {
+        BOOST_TEST_CONTEXT(b) {
+            const auto d = firstDifference(withCheck(a), withCheck(b));
+            BOOST_REQUIRE(d);
+            BOOST_TEST(d->field == "matrix.checks");
+        }
+    }
+    // The study's wording is a label, not a claim: the same claim with another label merges.
+    BOOST_TEST(!firstDifference(withCheck("{ type: compare, patterns: [independent, stratified], study: one }"),
+                                withCheck("{ type: compare, patterns: [independent, stratified], study: two }")));
 }
 
 BOOST_FIXTURE_TEST_CASE(first_difference_names_field_and_values, Fixture) {

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "statistics.h"
+#include "metrics/statistics.h"
 
 using namespace stipple::validation;
 

@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "image_metrics.h"
-#include "results.h"
+#include "metrics/image_metrics.h"
+#include "run/results.h"
 
 #include <stipple/testing/scratch_folder.h>
 

@@ -4,7 +4,7 @@
 // integrators (validation's core library, which these tests exercise, does not load either).
 #pragma once
 
-#include "matrix.h"
+#include "matrix/matrix.h"
 
 namespace stipple::validation::test {
 

@@ -6,7 +6,9 @@
 
 #include <cmath>
 
-#include "timing.h"
+#include "claims/checks.h"
+#include "matrix/check_kind.h"
+#include "claims/timing.h"
 
 using namespace stipple::validation;
 
@@ -87,20 +89,18 @@ BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {
     scene.name = "s";
     scene.file = scene.path = "s.yaml";
     m.scenes.push_back(scene);
-    Check k;
-    k.type = CheckType::TimeRatio;
-    k.numerator = "a";
-    k.denominator = "b";
-    k.maxRatio = 1.05;
-    k.spp = 64;
-    CheckOutcome o;
-    evaluateTimeRatio(k, m, rows, o);
+    m.patterns = {"a", "b"};
+    m.spp = {64};
+    const Check k = parseCheck("{ type: time_ratio, numerator: a, denominator: b, max: 1.05, spp: 64 }", "check.yaml", m,
+                               MatrixVocabulary{{"a", "b"}, {}});
+    const std::vector<CellAggregate> cells;
+    const std::vector<SlopeFit> slopes;
+    const CheckOutcome o = evaluateCheck(k, {m, rows, cells, slopes});
     BOOST_TEST_MESSAGE(formatOutcome(o));
     BOOST_CHECK(o.status == CheckStatus::Pass);
     BOOST_CHECK(formatOutcome(o).find("wall ratio 1.") != std::string::npos);
     // Rows without CPU seconds (older results) cannot be judged: FAIL naming the missing cells.
     for (auto& r : rows) r.cpuSeconds = 0;
-    CheckOutcome missing;
-    evaluateTimeRatio(k, m, rows, missing);
+    const CheckOutcome missing = evaluateCheck(k, {m, rows, cells, slopes});
     BOOST_CHECK(missing.status == CheckStatus::Fail);
 }

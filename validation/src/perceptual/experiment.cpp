@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "experiment.h"
+#include "perceptual/experiment.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,12 +12,12 @@
 
 #include <stipple/render/image_io.h>
 
-#include "../regions.h"
-#include "../report.h"
-#include "../statistics.h"
-#include "../text.h"
-#include "study_key.h"
-#include "study_page.h"
+#include "metrics/regions.h"
+#include "base/file_names.h"
+#include "metrics/statistics.h"
+#include "base/text.h"
+#include "perceptual/study_key.h"
+#include "perceptual/study_page.h"
 
 namespace stipple::validation {
 

@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "../matrix.h"
-#include "../results.h"
+#include "matrix/matrix.h"
+#include "run/results.h"
 
 namespace stipple::validation {
 

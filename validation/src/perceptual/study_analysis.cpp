@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "study_analysis.h"
+#include "perceptual/study_analysis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <stipple/statistics/student_t.h>
 
-#include "../statistics.h"
-#include "../text.h"
-#include "thurstone.h"
+#include "metrics/statistics.h"
+#include "base/text.h"
+#include "perceptual/thurstone.h"
 
 namespace stipple::validation {
 

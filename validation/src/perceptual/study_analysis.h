@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "study_key.h"
-#include "votes.h"
+#include "perceptual/study_key.h"
+#include "perceptual/votes.h"
 
 namespace stipple::validation {
 

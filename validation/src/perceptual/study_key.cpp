@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "study_key.h"
+#include "perceptual/study_key.h"
 
 #include <filesystem>
 #include <fstream>

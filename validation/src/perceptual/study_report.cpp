@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "study_report.h"
+#include "perceptual/study_report.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -13,10 +13,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "../results.h"
-#include "../text.h"
-#include "../verdicts_report.h"
-#include "experiment.h"
+#include "run/results.h"
+#include "base/text.h"
+#include "report/verdicts_report.h"
+#include "perceptual/experiment.h"
 
 namespace stipple::validation {
 

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "../report.h"
-#include "study_analysis.h"
+#include "report/report_inputs.h"
+#include "perceptual/study_analysis.h"
 
 namespace stipple::validation {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "study_server.h"
+#include "perceptual/study_server.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -16,9 +16,9 @@
 
 #include <httplib.h>
 
-#include "../report_publish.h"
-#include "study_key.h"
-#include "votes.h"
+#include "report/report_publish.h"
+#include "perceptual/study_key.h"
+#include "perceptual/votes.h"
 
 namespace stipple::validation {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "thurstone.h"
+#include "perceptual/thurstone.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
 
-#include "votes.h"
+#include "perceptual/votes.h"
 
 #include <algorithm>
 #include <cmath>

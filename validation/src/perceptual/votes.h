@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "study_key.h"
+#include "perceptual/study_key.h"
 
 namespace stipple::validation {
 
