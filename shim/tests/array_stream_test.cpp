@@ -121,7 +121,7 @@ BOOST_AUTO_TEST_CASE(unbiased) {
     const uint32_t n = 8, k = 3;
     // f = [sum of coordinates < 0.8 * arity / 2] + product of coordinates: an edge plus a smooth non-periodic part.
     const double exact[3] = {0.4 + 0.5, 0.32 + 0.25, 0};
-    const double critical = stipple::testing::studentCritical(stipple::testing::sidak(0.01, kPatterns * 2), kPixels - 1);
+    const double critical = stipple::statistics::studentTCritical(stipple::testing::sidak(0.01, kPatterns * 2), kPixels - 1);
     for (int pi = 0; pi < kPatterns; ++pi)
         for (uint32_t arity = 1; arity <= 2; ++arity) {
             const Sampler s = makeSampler(patterns[pi], n, 1234);

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -98,18 +99,45 @@ inline const char* patternName(uint32_t pattern) {
     return name;
 }
 
-// Every pattern of the library: numbers are dense from 0 (stipple.h), so a pattern added to the registry and to
-// STIPPLE_PATTERN_COUNT is in every test that loops over this list without a change here.
-constexpr int kPatternCount = int(STIPPLE_PATTERN_COUNT);
-constexpr std::array<uint32_t, STIPPLE_PATTERN_COUNT> kAllPatterns = [] {
-    std::array<uint32_t, STIPPLE_PATTERN_COUNT> all{};
-    for (uint32_t p = 0; p < all.size(); ++p) all[p] = p;
+// Every pattern the library serves, in id order, from its own listing (stipple_pattern_count): a pattern added
+// to the registry is in every test that loops over this list without a change here. The scratch build
+// (STIPPLE_TEST_SCRATCH_PATTERN, shim/CMakeLists.txt) checks that: its library serves one pattern past the public
+// ids, and the list must end with it.
+inline const std::vector<uint32_t>& allPatterns() {
+    static const std::vector<uint32_t> all = [] {
+        uint32_t count = 0;
+        if (stipple_pattern_count(&count) != STIPPLE_OK) throw std::logic_error("stipple_pattern_count failed");
+        std::vector<uint32_t> ids(count);
+        for (uint32_t p = 0; p < count; ++p) ids[p] = p;
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+        const char* last = nullptr;
+        if (count != STIPPLE_PATTERN_COUNT + 1 || stipple_pattern_name(count - 1, &last) != STIPPLE_OK ||
+            std::string(last) != STIPPLE_TEST_SCRATCH_PATTERN)
+            throw std::logic_error("the scratch build's library does not serve the scratch pattern " 
+                                   STIPPLE_TEST_SCRATCH_PATTERN " as its last pattern");
+#endif
+        return ids;
+    }();
     return all;
-}();
-// The patterns that take STIPPLE_SAMPLER_FLAG_BLUE_NOISE (the others refuse it at creation: blue_noise_test). The
-// library's limits say the same (batch_isa_test checks the two lists against stipple_pattern_get_limits).
-constexpr uint32_t kBlueNoisePatterns[] = {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED};
-constexpr uint32_t kBlueNoiseRefused[] = {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,
-                                          STIPPLE_PATTERN_PMJ02,   STIPPLE_PATTERN_LATTICE,      STIPPLE_PATTERN_HALTON};
+}
+inline int patternCount() { return int(allPatterns().size()); }
+
+// The STIPPLE_SAMPLER_FLAG_* bits pattern `pattern` accepts (stipple_pattern_get_limits).
+inline uint32_t acceptedFlags(uint32_t pattern) {
+    stipple_pattern_limits limits{};
+    limits.struct_size = sizeof limits;
+    if (stipple_pattern_get_limits(pattern, &limits) != STIPPLE_OK) throw std::logic_error("stipple_pattern_get_limits");
+    return limits.flags;
+}
+
+// The patterns whose limits accept STIPPLE_SAMPLER_FLAG_BLUE_NOISE, and the others (which refuse it at creation:
+// blue_noise_test checks both against sampler creation).
+inline std::vector<uint32_t> blueNoisePatterns(bool accepted = true) {
+    std::vector<uint32_t> list;
+    for (uint32_t p : allPatterns())
+        if (bool(acceptedFlags(p) & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) == accepted) list.push_back(p);
+    return list;
+}
+inline std::vector<uint32_t> blueNoiseRefused() { return blueNoisePatterns(false); }
 
 } // namespace stipple::test
