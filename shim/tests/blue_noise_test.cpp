@@ -74,29 +74,19 @@ BOOST_AUTO_TEST_CASE(the_flag_is_refused_for_the_patterns_it_cannot_serve) {
     // sampler is returned, and the same description without the flag is accepted.
     for (uint32_t pattern : blueNoiseRefused())
         for (uint32_t dimensions : {0u, 1u}) {
-            stipple_dimension_desc dim{};
-            dim.struct_size = sizeof dim;
-            dim.arity = 2;
-            dim.count = 1;
-            stipple_sampler_desc desc{};
-            desc.struct_size = sizeof desc;
-            desc.pattern = pattern;
-            desc.samples_per_pixel = 16;
-            desc.dimension_count = dimensions;
-            desc.dimensions = dimensions ? &dim : nullptr;
-            desc.flags = kBlue;
-            stipple_sampler s = reinterpret_cast<stipple_sampler>(uintptr_t(1));
-            BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_ERROR_INVALID_ARGUMENT);
-            BOOST_CHECK(s == nullptr);
-            const std::string message = stipple_last_error_message();
+            const std::vector<DimensionSpec> layout =
+                dimensions ? std::vector<DimensionSpec>{{2, 1}} : std::vector<DimensionSpec>{};
+            stipple::Sampler s;
+            const stipple::Status refused = createSampler(s, pattern, 16, 0, layout, kBlue);
+            BOOST_CHECK_EQUAL(refused.code(), STIPPLE_ERROR_INVALID_ARGUMENT);
+            BOOST_CHECK(!s);
+            const std::string& message = refused.message();
             BOOST_CHECK_MESSAGE(message.find(std::string("the ") + patternName(pattern) + " pattern") !=
                                         std::string::npos &&
                                     message.find("STIPPLE_SAMPLER_FLAG_BLUE_NOISE") != std::string::npos &&
                                     message.find("\"stratified\"") != std::string::npos,
                                 patternName(pattern) << ": " << message);
-            desc.flags = 0;
-            BOOST_REQUIRE_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_OK);
-            stipple_sampler_release(s);
+            BOOST_REQUIRE(createSampler(s, pattern, 16, 0, layout).ok());
         }
     for (uint32_t pattern : blueNoisePatterns()) { // accepted
         auto s = makeFlagged(pattern, 16, 1, 2, kBlue);

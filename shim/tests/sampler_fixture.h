@@ -25,13 +25,19 @@ struct DimensionSpec {
     const char* name = nullptr;
 };
 
-inline stipple_dimension_desc toDesc(const DimensionSpec& spec) {
-    stipple_dimension_desc d{};
-    d.struct_size = sizeof d;
-    d.arity = spec.arity;
-    d.count = spec.count;
-    d.name = spec.name;
-    return d;
+inline const char* patternName(uint32_t pattern) {
+    const char* name = "?";
+    stipple_pattern_name(pattern, &name);
+    return name;
+}
+
+// The kit's creation of a sampler for pattern `pattern` (its id, as the tests loop over ids) with a declared layout
+// of `dims` (none: streams and arrays only): what every test and benchmark creates samplers with.
+inline stipple::Status createSampler(stipple::Sampler& out, uint32_t pattern, uint32_t n, uint64_t seed,
+                                     const std::vector<DimensionSpec>& dims, uint32_t flags = 0) {
+    std::vector<stipple::LayoutDimension> layout;
+    for (const DimensionSpec& d : dims) layout.push_back({d.arity, d.count, d.name ? d.name : ""});
+    return stipple::Sampler::create(out, patternName(pattern), n, seed, layout, flags);
 }
 
 // A test's sampler: the C++ kit's owner (stipple.hpp), so the tests create and release samplers as hosts do;
@@ -48,18 +54,8 @@ private:
 
 inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const std::vector<DimensionSpec>& dims,
                               uint32_t flags = 0) {
-    std::vector<stipple_dimension_desc> descs;
-    for (const auto& d : dims) descs.push_back(toDesc(d));
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = static_cast<uint32_t>(descs.size());
-    desc.seed = seed;
-    desc.dimensions = descs.empty() ? nullptr : descs.data();
-    desc.flags = flags;
     stipple::Sampler sampler;
-    const stipple::Status status = stipple::Sampler::create(sampler, desc);
+    const stipple::Status status = createSampler(sampler, pattern, n, seed, dims, flags);
     BOOST_REQUIRE_MESSAGE(status.ok(), "stipple_sampler_create: " << status.message());
     return SamplerPtr(std::move(sampler));
 }
@@ -93,16 +89,10 @@ inline std::vector<float> fillPixelUnchecked(stipple_sampler s, uint32_t x, uint
     return out;
 }
 
-inline const char* patternName(uint32_t pattern) {
-    const char* name = "?";
-    stipple_pattern_name(pattern, &name);
-    return name;
-}
-
 // Every pattern the library serves, in id order, from its own listing (stipple_pattern_count): a pattern added
 // to the registry is in every test that loops over this list without a change here. The scratch build
 // (STIPPLE_TEST_SCRATCH_PATTERN, shim/CMakeLists.txt) checks that: its library serves one pattern past the public
-// ids, and the list must end with it.
+// ids, the list must end with it, and the tests loop over it alone.
 inline const std::vector<uint32_t>& allPatterns() {
     static const std::vector<uint32_t> all = [] {
         uint32_t count = 0;
@@ -110,17 +100,38 @@ inline const std::vector<uint32_t>& allPatterns() {
         std::vector<uint32_t> ids(count);
         for (uint32_t p = 0; p < count; ++p) ids[p] = p;
 #if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+        // The scratch build: the library must list the scratch pattern last; the tests then run on it alone (the
+        // public patterns have their own run).
         const char* last = nullptr;
         if (count != STIPPLE_PATTERN_COUNT + 1 || stipple_pattern_name(count - 1, &last) != STIPPLE_OK ||
             std::string(last) != STIPPLE_TEST_SCRATCH_PATTERN)
-            throw std::logic_error("the scratch build's library does not serve the scratch pattern " 
-                                   STIPPLE_TEST_SCRATCH_PATTERN " as its last pattern");
+            throw std::logic_error("the scratch build's library does not list the scratch pattern \""
+                                   STIPPLE_TEST_SCRATCH_PATTERN "\" last");
+        ids.erase(ids.begin(), ids.end() - 1);
 #endif
         return ids;
     }();
     return all;
 }
 inline int patternCount() { return int(allPatterns().size()); }
+
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+} // namespace stipple::test
+namespace stipple::detail {
+uint64_t scratchPatternUses(); // tests/scratch_pattern.cpp: sets the library prepared or computed with it
+}
+namespace stipple::test {
+// The scratch build's check at the end of every test program: the program did reach the scratch pattern (a test
+// that kept a list of its own would not).
+struct ScratchPatternReached {
+    void setup() {}
+    void teardown() {
+        BOOST_CHECK_MESSAGE(stipple::detail::scratchPatternUses() > 0,
+                            "the scratch pattern \"" STIPPLE_TEST_SCRATCH_PATTERN "\" was never used");
+    }
+};
+BOOST_TEST_GLOBAL_FIXTURE(ScratchPatternReached);
+#endif
 
 // The STIPPLE_SAMPLER_FLAG_* bits pattern `pattern` accepts (stipple_pattern_get_limits).
 inline uint32_t acceptedFlags(uint32_t pattern) {

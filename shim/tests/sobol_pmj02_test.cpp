@@ -266,17 +266,10 @@ BOOST_AUTO_TEST_CASE(pmj02_samples_past_n_are_the_fresh_4n_set) {
 }
 
 BOOST_AUTO_TEST_CASE(pmj02_sets_above_its_limit_are_a_clear_error) {
-    stipple_dimension_desc d = toDesc({2, 2});
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = STIPPLE_PATTERN_PMJ02;
-    desc.samples_per_pixel = 65536;
-    desc.dimension_count = 1;
-    desc.dimensions = &d;
-    stipple_sampler s = nullptr;
-    BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_ERROR_OUT_OF_RANGE);
-    BOOST_CHECK(std::string(stipple_last_error_message()).find("pmj02 pattern serves sets of at most 65536") !=
-                std::string::npos);
+    stipple::Sampler s;
+    const stipple::Status status = createSampler(s, STIPPLE_PATTERN_PMJ02, 65536, 0, {{2, 2}});
+    BOOST_CHECK_EQUAL(status.code(), STIPPLE_ERROR_OUT_OF_RANGE);
+    BOOST_CHECK(status.message().find("pmj02 pattern serves sets of at most 65536") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(blue_noise_keeps_every_pixel_valid_and_deterministic) {
