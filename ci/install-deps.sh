@@ -17,7 +17,7 @@ main_packages=(
   libembree-dev libtbb-dev
   libopenimageio-dev libopencolorio-dev
   libyaml-cpp-dev nlohmann-json3-dev
-  libboost-dev            # Boost.Math (statistics/)
+  libboost-dev            # Boost.Math (common/: stipple::statistics)
   gnuplot-nox             # the report's and Figure 3's plots
   openimageio-tools       # OpenImageIO's CMake config names its tools (/usr/bin/iconvert ...): configure fails without them
   libcpp-httplib-dev pkg-config  # stipple-validate --serve-study (the perceptual experiment's votes)

@@ -9,6 +9,7 @@
 #include <stipple/render/content_hash.h>
 #include <stipple/render/progress_bar.h>
 #include <stipple/version.h>
+#include <stipple/stipple.hpp>
 
 #include "integrators/integrator.h"
 #include "scene/render_scene.h"
@@ -47,6 +48,11 @@ std::string rendererIdentity() { return std::string(rendererVersion()) + " sourc
 std::string shimIdentity(const std::string& shimPath) { return ShimLibrary::get(shimPath).identity(); }
 
 std::vector<std::string> patternNames(const std::string& shimPath) { return ShimLibrary::get(shimPath).patternNames(); }
+
+bool patternServed(const std::string& shimPath, const std::string& pattern) {
+    uint32_t id = 0, flags = 0;
+    return stipple::parsePattern(pattern, id, flags, ShimLibrary::get(shimPath).api()).ok();
+}
 
 std::vector<std::string> integratorNames() { return registeredIntegrators(); }
 

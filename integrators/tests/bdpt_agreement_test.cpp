@@ -40,7 +40,7 @@ void compare(const std::string& file, int maxDepth, uint64_t seed, int kBlock = 
         for (int bx = 0; bx < kSize / kBlock; ++bx) {
             BlockEstimate a = blockEstimate(bdpt, bx * kBlock, by * kBlock, kBlock, kBlock);
             BlockEstimate b = blockEstimate(path, bx * kBlock, by * kBlock, kBlock, kBlock);
-            double p = welchPValue(a, b);
+            double p = welchTwoSidedP(a, b);
             minP = std::min(minP, p);
             BOOST_TEST(p >= alpha, file << " block (" << bx << "," << by << "): bdpt " << a.mean << " +- "
                                         << std::sqrt(a.varianceOfMean) << ", path " << b.mean << " +- "

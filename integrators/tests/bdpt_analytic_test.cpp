@@ -31,7 +31,7 @@ void checkFurnace(const std::string& file, int maxDepth, uint64_t seed) {
     BlockEstimate e = blockEstimate(s, 0, 0, 16, 16);
     double expected = 1 - std::pow(0.5, maxDepth + 1);
     double sd = std::sqrt(e.varianceOfMean);
-    double t = stipple::testing::studentCritical(sidak(0.01, kCases), kRenders - 1);
+    double t = stipple::statistics::studentTCritical(sidak(0.01, kCases), kRenders - 1);
     BOOST_TEST_MESSAGE(file << " D=" << maxDepth << ": mean " << e.mean << " expected " << expected << " +- "
                             << t * sd);
     for (const RenderResult& r : s.renders) BOOST_TEST(r.nonFiniteSamples == 0u);

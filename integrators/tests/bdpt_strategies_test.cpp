@@ -36,7 +36,7 @@ void checkDepth(int depth, uint64_t seed) {
             for (int bx = 0; bx < kSize / kBlock; ++bx) {
                 BlockEstimate a = blockEstimate(one, bx * kBlock, by * kBlock, kBlock, kBlock);
                 BlockEstimate b = blockEstimate(mis, bx * kBlock, by * kBlock, kBlock, kBlock);
-                double p = welchPValue(a, b);
+                double p = welchTwoSidedP(a, b);
                 BOOST_TEST(p >= alpha, o.integrator << " block (" << bx << "," << by << "): " << a.mean << " +- "
                                                     << std::sqrt(a.varianceOfMean) << " vs MIS " << b.mean << " +- "
                                                     << std::sqrt(b.varianceOfMean) << ", p = " << p);

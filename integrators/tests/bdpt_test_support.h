@@ -31,13 +31,13 @@ inline SeedRenders renderSeeds(const Scene& scene, RenderOptions o, int k, uint6
 }
 
 // Mean of a block (over its pixels and channels) across renders, and the variance of that mean.
-using BlockEstimate = stipple::testing::MeanEstimate;
+using BlockEstimate = stipple::statistics::MeanEstimate;
 using stipple::testing::sidak;
-using stipple::testing::welchPValue;
+using stipple::statistics::welchTwoSidedP;
 
 inline BlockEstimate blockEstimate(const SeedRenders& s, int x0, int y0, int w, int h) {
     BlockEstimate e;
-    e.k = int(s.renders.size());
+    e.count = double(s.renders.size());
     std::vector<double> v;
     for (const RenderResult& r : s.renders) {
         double sum = 0;
@@ -46,10 +46,10 @@ inline BlockEstimate blockEstimate(const SeedRenders& s, int x0, int y0, int w, 
                 for (int c = 0; c < 3; ++c) sum += r.image.pixel(x, y)[c];
         v.push_back(sum / (3.0 * w * h));
     }
-    for (double x : v) e.mean += x / e.k;
+    for (double x : v) e.mean += x / e.count;
     double ss = 0;
     for (double x : v) ss += (x - e.mean) * (x - e.mean);
-    e.varianceOfMean = e.k > 1 ? ss / (e.k - 1) / e.k : 0;
+    e.varianceOfMean = e.count > 1 ? ss / (e.count - 1) / e.count : 0;
     return e;
 }
 

@@ -64,11 +64,12 @@ int main(int argc, char** argv) {
     if (args.patternGiven) {
         // The names come from the shim that will serve them; a shim that does not load is reported by the render.
         std::vector<std::string> known;
+        bool served = true;
         try {
             known = patternNames(args.options.shim);
+            served = patternServed(args.options.shim, args.options.pattern);
         } catch (const std::exception&) {}
-        const std::string base = args.options.pattern.substr(0, args.options.pattern.find(kBlueNoiseSuffix));
-        if (!known.empty() && std::find(known.begin(), known.end(), base) == known.end()) {
+        if (!served) {
             std::string list;
             for (const std::string& n : known) list += (list.empty() ? "" : ", ") + n;
             std::cerr << "stipple-render: option --pattern: expected one of " << list << " (optionally followed by "

@@ -25,6 +25,7 @@
 #include "battery_integrands.h"
 
 #include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -57,8 +58,7 @@ struct Options {
     int threads = std::max(1u, std::thread::hardware_concurrency());
     bool quick = false;
     bool blue = true;
-    std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed",
-                                         "sobol",       "pmj02",      "lattice", "halton"};
+    std::vector<std::string> patterns; // default: every pattern the library lists
     std::vector<std::string> sections = {"battery", "nested", "prefix"};
 };
 
@@ -86,42 +86,15 @@ struct Variant {
     std::string label() const { return blue ? pattern + " +bn" : pattern; }
 };
 
-stipple_sampler makeSampler(const Variant& v, uint32_t n, std::vector<uint32_t> arities, uint64_t seed) {
-    std::vector<stipple_dimension_desc> dims(arities.size());
-    for (size_t i = 0; i < arities.size(); ++i) {
-        dims[i] = {};
-        dims[i].struct_size = sizeof(stipple_dimension_desc);
-        dims[i].arity = arities[i];
-        dims[i].count = 1;
-    }
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = v.id;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = static_cast<uint32_t>(dims.size());
-    desc.dimensions = dims.data();
-    desc.seed = seed;
-    desc.flags = v.blue ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0;
-    stipple_sampler s = nullptr;
-    check(stipple_sampler_create(&desc, &s), "stipple_sampler_create");
+// A sampler through the kit (stipple.hpp); the measured calls use its handle.
+stipple::Sampler makeSampler(const Variant& v, uint32_t n, std::vector<uint32_t> arities, uint64_t seed) {
+    std::vector<stipple::LayoutDimension> layout;
+    for (uint32_t arity : arities) layout.push_back({arity, 1, ""});
+    stipple::Sampler s;
+    const stipple::Status status =
+        stipple::Sampler::create(s, v.pattern, n, seed, layout, v.blue ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0);
+    if (!status.ok()) fail("creating a " + v.label() + " sampler: " + status.message());
     return s;
-}
-
-// A one-dimension sampler of `pattern` with or without the blue-noise flag, or nullptr if the library refuses it.
-stipple_sampler makeSamplerIfAccepted(uint32_t pattern, bool blue) {
-    stipple_dimension_desc dim{};
-    dim.struct_size = sizeof dim;
-    dim.arity = 2;
-    dim.count = 1;
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = 16;
-    desc.dimension_count = 1;
-    desc.dimensions = &dim;
-    desc.flags = blue ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0;
-    stipple_sampler s = nullptr;
-    return stipple_sampler_create(&desc, &s) == STIPPLE_OK ? s : nullptr;
 }
 
 // Replicate r's pixel: 67 apart, so every replicate lies in its own 64 x 64 blue-noise tile.
@@ -233,7 +206,8 @@ void runBattery(const Options& opt, BatteryResult& res) {
         const Task& task = tasks[t];
         const uint32_t N = res.ns[task.n], arity = uint32_t(task.a + 1);
         const std::vector<Integrand>& battery = res.integrands[task.a];
-        stipple_sampler s = makeSampler(res.variants[task.v], N, {arity}, kSeed);
+        const stipple::Sampler sampler = makeSampler(res.variants[task.v], N, {arity}, kSeed);
+        const stipple_sampler s = sampler.handle();
         std::vector<float> pts(size_t(N) * arity);
         Cell& cell = res.cells[task.v][task.a][task.n];
         int64_t spent = 0;
@@ -253,7 +227,6 @@ void runBattery(const Options& opt, BatteryResult& res) {
             }
         }
         nanos[(task.v * 3 + task.a) * NN + task.n] += spent;
-        stipple_sampler_release(s);
     });
     std::vector<size_t> cellIds;
     for (size_t c = 0; c < V * 3 * NN; ++c) cellIds.push_back(c);
@@ -447,7 +420,8 @@ std::string runNested(const Options& opt) {
         check(stipple_pattern_from_name(patterns[p].c_str(), &id), "pattern");
         std::vector<uint32_t> arities(kDims, 1);
         arities.insert(arities.end(), kDims, 2);
-        stipple_sampler s = makeSampler({patterns[p], id, false}, N, arities, kSeed ^ 0x4e57ull);
+        const stipple::Sampler sampler = makeSampler({patterns[p], id, false}, N, arities, kSeed ^ 0x4e57ull);
+        const stipple_sampler s = sampler.handle();
         std::vector<float> pts(size_t(N) * 2);
         // sum of (mean - 1/2)^2 per statistic: the mean of frac(N x) is exactly 1/2 for uniform points
         std::vector<double> sq(3 * kDims, 0.0);
@@ -477,7 +451,6 @@ std::string runNested(const Options& opt) {
             else
                 row.mean2 += stat / (2 * kDims), row.max2 = std::max(row.max2, stat);
         }
-        stipple_sampler_release(s);
     });
     std::ostringstream o;
     o << "12 N Var(mean of frac(N x)) over " << R << " pixels (1 for a nested uniform scramble; its standard error "
@@ -518,7 +491,8 @@ std::string runPrefix(const Options& opt, const std::vector<Variant>& variants) 
         const size_t v = c / (3 * ns.size()), a = (c / ns.size()) % 3, n = c % ns.size();
         const uint32_t N = ns[n], arity = uint32_t(a + 1), M = 4 * N;
         const auto& battery = integrands[a];
-        stipple_sampler s = makeSampler(variants[v], fresh ? M : N, {}, kSeed ^ 0x9e3ull);
+        const stipple::Sampler sampler = makeSampler(variants[v], fresh ? M : N, {}, kSeed ^ 0x9e3ull);
+        const stipple_sampler s = sampler.handle();
         Cell& cell = fresh ? cells[c].fresh : cells[c].past;
         cell.err.assign(battery.size(), std::vector<double>(R));
         std::vector<float> pts(size_t(M) * arity);
@@ -535,7 +509,6 @@ std::string runPrefix(const Options& opt, const std::vector<Variant>& variants) 
             }
         }
         bootstrap(cell, opt.boot, 0x9f3ull + t);
-        stipple_sampler_release(s);
     });
     std::ostringstream o;
     o << "MSE of samples 0 .. 4N-1 of an N-sample sampler (stream_fill past N) / MSE of a fresh 4N-sample set, "
@@ -614,6 +587,7 @@ int main(int argc, char** argv) {
         else if (a == "--sections") opt.sections = splitList(value());
         else fail("unknown argument \"" + a + "\" (see the comment at the top of battery.cpp)");
     }
+    if (opt.patterns.empty() && !stipple::patternNames(opt.patterns).ok()) fail("the library lists no patterns");
     std::vector<Variant> variants;
     for (const std::string& p : opt.patterns) {
         uint32_t id;
@@ -624,12 +598,10 @@ int main(int argc, char** argv) {
         for (const std::string& p : opt.patterns) {
             uint32_t id;
             stipple_pattern_from_name(p.c_str(), &id);
-            // Only the patterns the library takes the flag for (the others refuse it at creation).
-            stipple_sampler probe = nullptr;
-            if (p != "poisson-seed" && (probe = makeSamplerIfAccepted(id, true))) {
-                stipple_sampler_release(probe);
+            // Only the patterns whose limits take the flag (the others refuse it at creation).
+            stipple_pattern_limits limits{};
+            if (stipple::patternLimits(p, limits).ok() && (limits.flags & STIPPLE_SAMPLER_FLAG_BLUE_NOISE))
                 variants.push_back({p, id, true});
-            }
         }
     auto has = [&](const char* s) { return std::find(opt.sections.begin(), opt.sections.end(), s) != opt.sections.end(); };
     const auto start = std::chrono::steady_clock::now();

@@ -22,6 +22,7 @@
 #include "battery_integrands.h"
 
 #include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -57,25 +58,11 @@ std::vector<std::string> splitList(const std::string& s) {
     return out;
 }
 
-// nullptr (with the library's message) when the library refuses the combination.
-stipple_sampler makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, bool blue, std::string* refusal) {
-    stipple_dimension_desc dim{};
-    dim.struct_size = sizeof dim;
-    dim.arity = 2;
-    dim.count = 1;
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = 1;
-    desc.dimensions = &dim;
-    desc.seed = seed;
-    desc.flags = blue ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0;
-    stipple_sampler s = nullptr;
-    if (stipple_sampler_create(&desc, &s) != STIPPLE_OK) {
-        *refusal = stipple_last_error_message();
-        return nullptr;
-    }
+// A sampler through the kit (stipple.hpp): empty, with the library's message in status(), when the library
+// refuses the combination.
+stipple::Sampler makeSampler(const std::string& pattern, uint32_t n, uint64_t seed, bool blue) {
+    stipple::Sampler s;
+    (void)stipple::Sampler::create(s, pattern, n, seed, {{2, 1, ""}}, blue ? STIPPLE_SAMPLER_FLAG_BLUE_NOISE : 0);
     return s;
 }
 
@@ -183,7 +170,7 @@ int main(int argc, char** argv) {
     int images = 12, size = 128, boot = 400;
     int threads = int(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<uint32_t> ns = {16, 64, 256};
-    std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"};
+    std::vector<std::string> patterns; // default: every pattern the library lists
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -219,14 +206,14 @@ int main(int argc, char** argv) {
           "flag removed low-frequency error), and per-pixel MSE ratio flag / plain, each with a 95% bootstrap "
           "interval over "
        << images << " images of " << size << " x " << size << " pixels per side (shim_blue_noise_gain).\n\n";
+    if (patterns.empty() && !stipple::patternNames(patterns).ok()) fail("the library lists no patterns");
     for (const std::string& name : patterns) {
         uint32_t id = 0;
         if (stipple_pattern_from_name(name.c_str(), &id) != STIPPLE_OK) fail("unknown pattern \"" + name + "\"");
         md << "### " << name << "\n\n";
-        std::string refusal;
-        if (stipple_sampler s = makeSampler(id, ns[0], kSeed, true, &refusal))
-            stipple_sampler_release(s);
-        else {
+        const stipple::Sampler probe = makeSampler(name, ns[0], kSeed, true);
+        if (!probe) {
+            const std::string refusal = probe.status().message();
             md << "Refused: " << refusal << "\n\n";
             std::cerr << name << ": refused (" << refusal << ")\n";
             continue;
@@ -248,11 +235,9 @@ int main(int argc, char** argv) {
                     for (int job; (job = next.fetch_add(1)) < 2 * images;) {
                         const bool blue = job % 2 == 1;
                         const int image = job / 2;
-                        std::string why;
-                        stipple_sampler s = makeSampler(id, n, kSeed + uint64_t(image), blue, &why);
-                        if (!s) fail("stipple_sampler_create: " + why);
-                        stats[blue][size_t(image)] = renderImage(s, n, size, battery);
-                        stipple_sampler_release(s);
+                        const stipple::Sampler s = makeSampler(name, n, kSeed + uint64_t(image), blue);
+                        if (!s) fail("creating a sampler: " + s.status().message());
+                        stats[blue][size_t(image)] = renderImage(s.handle(), n, size, battery);
                     }
                 });
             for (auto& th : pool) th.join();

@@ -31,6 +31,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,8 +39,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kAllPatterns[] = {"independent", "stratified", "poisson", "poisson-seed",
-                              "sobol",       "pmj02",      "lattice", "halton"};
+// Every pattern the library lists (stipple_pattern_count / stipple_pattern_name, through the kit).
+std::vector<std::string> allPatterns() {
+    std::vector<std::string> names;
+    const stipple::Status s = stipple::patternNames(names);
+    if (!s.ok()) throw std::runtime_error("listing the library's patterns: " + s.message());
+    return names;
+}
 
 struct Integrand {
     const char* name;
@@ -280,7 +286,8 @@ int main(int argc, char** argv) {
         table << "| pattern | rho (2D, N = 1024, mean) | disk slope [95%] | step slope [95%] | Gaussian slope [95%] | "
                  "Gaussian slope N = 256..4096 [95%] | cost per value (ns, 2D N = 4096) "
                  "|\n|---|---|---|---|---|---|---|\n";
-        for (const char* pattern : kAllPatterns) {
+        for (const std::string& name : allPatterns()) {
+            const char* pattern = name.c_str();
             std::vector<std::vector<std::vector<double>>> sq(g2.size(),
                                                              std::vector<std::vector<double>>(slopeNs.size()));
             std::vector<float> points;

@@ -68,18 +68,9 @@ struct Options {
 struct LayoutSampler {
     stipple::Sampler sampler;
     LayoutSampler(uint32_t pattern, uint32_t arity, uint32_t n, uint64_t seed) {
-        stipple_dimension_desc dim{};
-        dim.struct_size = sizeof dim;
-        dim.arity = arity;
-        dim.count = 1;
-        stipple_sampler_desc desc{};
-        desc.struct_size = sizeof desc;
-        desc.pattern = pattern;
-        desc.samples_per_pixel = n;
-        desc.dimension_count = 1;
-        desc.seed = seed;
-        desc.dimensions = &dim;
-        (void)stipple::Sampler::create(sampler, desc); // a failure is reported through sampler.status()
+        const char* name = "";
+        stipple_pattern_name(pattern, &name);
+        (void)stipple::Sampler::create(sampler, name, n, seed, {{arity, 1, ""}}); // a failure: sampler.status()
     }
     stipple_sampler handle() const { return sampler.handle(); }
 };

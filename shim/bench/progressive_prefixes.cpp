@@ -10,6 +10,7 @@
 // Fixed seeds: the output is the same on every run.
 //   usage: shim_progressive_prefixes > prefixes.md
 #include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include "pointsets/pointsets.h"
 
@@ -20,15 +21,14 @@
 
 namespace {
 
-stipple_sampler streams(uint32_t pattern, uint32_t n, uint64_t seed) {
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.seed = seed;
-    stipple_sampler s = nullptr;
-    if (stipple_sampler_create(&desc, &s) != STIPPLE_OK) {
-        std::fprintf(stderr, "%s\n", stipple_last_error_message());
+// A streams-only sampler through the kit (stipple.hpp); the measured calls use its handle.
+stipple::Sampler streams(uint32_t pattern, uint32_t n, uint64_t seed) {
+    const char* name = "";
+    stipple_pattern_name(pattern, &name);
+    stipple::Sampler s;
+    const stipple::Status status = stipple::Sampler::create(s, name, n, seed);
+    if (!status.ok()) {
+        std::fprintf(stderr, "%s\n", status.message().c_str());
         std::exit(1);
     }
     return s;
@@ -63,9 +63,11 @@ int main() {
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     for (uint32_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED, STIPPLE_PATTERN_POISSON})
         for (uint32_t n : {256u, 1024u}) {
-            stipple_sampler full = streams(pattern, n, 2026);
+            const stipple::Sampler fullSampler = streams(pattern, n, 2026);
+            const stipple_sampler full = fullSampler.handle();
             for (uint32_t m : {n / 4, n / 2, n}) {
-                stipple_sampler fresh = streams(pattern, m, 2027);
+                const stipple::Sampler freshSampler = streams(pattern, m, 2027);
+                const stipple_sampler fresh = freshSampler.handle();
                 double rhoPrefix = 0, rhoFresh = 0;
                 for (uint32_t p = 0; p < 64; ++p) {
                     rhoPrefix += stipple::detail::pointsets::relativeRadius(2, prefix(full, p, m).data(), m) / 64;
@@ -82,9 +84,7 @@ int main() {
                 }
                 std::printf("| %s | %u | %u | %.3f | %.3f | %.3e | %.3e | %.3e | %.3e |\n", names[pattern], n, m,
                             rhoPrefix, rhoFresh, diskPrefix, diskFresh, gaussPrefix, gaussFresh);
-                stipple_sampler_release(fresh);
             }
-            stipple_sampler_release(full);
         }
     return 0;
 }

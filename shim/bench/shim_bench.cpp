@@ -52,32 +52,18 @@ void label(benchmark::State& state, uint32_t pattern) {
 
 // Samplers through stipple.hpp (the timed loops below call the C ABI directly: that is what they measure).
 stipple::Sampler makeStreamSampler(uint32_t pattern, uint32_t n) {
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = 0;
-    desc.seed = 7;
+    const char* name = "";
+    stipple_pattern_name(pattern, &name);
     stipple::Sampler sampler;
-    (void)stipple::Sampler::create(sampler, desc); // a failure is in sampler.status()
+    (void)stipple::Sampler::create(sampler, name, n, 7); // a failure is in sampler.status()
     return sampler;
 }
 
 stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t flags = 0) {
-    stipple_dimension_desc dim{};
-    dim.struct_size = sizeof dim;
-    dim.arity = arity;
-    dim.count = 1;
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = 1;
-    desc.seed = 7;
-    desc.dimensions = &dim;
-    desc.flags = flags;
+    const char* name = "";
+    stipple_pattern_name(pattern, &name);
     stipple::Sampler sampler;
-    (void)stipple::Sampler::create(sampler, desc);
+    (void)stipple::Sampler::create(sampler, name, n, 7, {{arity, 1, ""}}, flags);
     return sampler;
 }
 
@@ -212,23 +198,36 @@ void BM_Pmj02Depth(benchmark::State& state) {
     state.SetItemsProcessed(int64_t(state.iterations()) << m);
 }
 
+// Every pattern the library lists.
+uint32_t libraryPatternCount() {
+    uint32_t count = 0;
+    return stipple_pattern_count(&count) == STIPPLE_OK ? count : 0;
+}
+
+uint32_t acceptedFlags(uint32_t pattern) {
+    stipple_pattern_limits limits{};
+    limits.struct_size = sizeof limits;
+    return stipple_pattern_get_limits(pattern, &limits) == STIPPLE_OK ? limits.flags : 0;
+}
+
 void fillArguments(benchmark::internal::Benchmark* b) {
-    for (int64_t pattern = 0; pattern < STIPPLE_PATTERN_COUNT; ++pattern)
+    for (int64_t pattern = 0; pattern < int64_t(libraryPatternCount()); ++pattern)
         for (int64_t arity = 1; arity <= 3; ++arity)
             for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});
 }
 
-// The patterns that accept the blue-noise flag, plain (0) and flagged (1) next to each other.
+// The patterns whose limits accept the blue-noise flag, plain (0) and flagged (1) next to each other.
 void blueNoiseArguments(benchmark::internal::Benchmark* b) {
-    for (int64_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED})
-        for (int64_t arity = 1; arity <= 3; ++arity)
-            for (int64_t n : {16, 256, 4096})
-                for (int64_t blue : {0, 1}) b->Args({pattern, arity, n, blue});
+    for (int64_t pattern = 0; pattern < int64_t(libraryPatternCount()); ++pattern)
+        if (acceptedFlags(uint32_t(pattern)) & STIPPLE_SAMPLER_FLAG_BLUE_NOISE)
+            for (int64_t arity = 1; arity <= 3; ++arity)
+                for (int64_t n : {16, 256, 4096})
+                    for (int64_t blue : {0, 1}) b->Args({pattern, arity, n, blue});
 }
 
 // Per-value calls: poisson-seed generates its whole set on every call by design, so it is left out here.
 void accessArguments(benchmark::internal::Benchmark* b) {
-    for (int64_t pattern = 0; pattern < STIPPLE_PATTERN_COUNT; ++pattern)
+    for (int64_t pattern = 0; pattern < int64_t(libraryPatternCount()); ++pattern)
         if (pattern != STIPPLE_PATTERN_POISSON_SEED)
             for (int64_t arity = 1; arity <= 3; ++arity)
                 for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});

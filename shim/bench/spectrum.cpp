@@ -16,6 +16,7 @@
 //
 // stipple-link: shared
 #include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include "pointsets/pointsets.h"
 #include "pointsets/spectrum.h"
@@ -54,21 +55,13 @@ uint32_t parseCount(const std::string& text, const char* what, uint32_t limit) {
     return uint32_t(value);
 }
 
-stipple_sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
-    stipple_dimension_desc dimension{};
-    dimension.struct_size = sizeof dimension;
-    dimension.arity = arity;
-    dimension.count = 1;
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = 1;
-    desc.dimensions = &dimension;
-    desc.seed = 0x5bec7;
-    stipple_sampler sampler = nullptr;
-    if (stipple_sampler_create(&desc, &sampler) != STIPPLE_OK)
-        fail(std::string("stipple_sampler_create: ") + stipple_last_error_message());
+// A one-dimension sampler through the kit (stipple.hpp).
+stipple::Sampler makeSampler(uint32_t pattern, uint32_t arity, uint32_t n) {
+    const char* name = "";
+    stipple_pattern_name(pattern, &name);
+    stipple::Sampler sampler;
+    const stipple::Status status = stipple::Sampler::create(sampler, name, n, 0x5bec7, {{arity, 1, ""}});
+    if (!status.ok()) fail("creating a sampler: " + status.message());
     return sampler;
 }
 
@@ -98,7 +91,8 @@ int annulusWidth(uint32_t arity, uint32_t n) { return arity == 1 ? int(std::max(
 Measures measure(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixels) {
     const int K = std::max(1, int(std::floor(2.0 * std::pow(double(n), 1.0 / arity) + 1e-9)));
     PowerSpectrum spectrum(int(arity), K, annulusWidth(arity, n));
-    stipple_sampler sampler = makeSampler(pattern, arity, n);
+    const stipple::Sampler owner = makeSampler(pattern, arity, n);
+    const stipple_sampler sampler = owner.handle();
     std::vector<float> values(size_t(n) * arity);
     Measures m{0, 0, 0, 0, 1e9, 0, 0, {}};
     for (uint32_t p = 0; p < pixels; ++p) {
@@ -111,7 +105,6 @@ Measures measure(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixels) 
         m.rhoMean += rho / pixels;
         if (arity == 1) m.cellPixels += onePointPerCell(values);
     }
-    stipple_sampler_release(sampler);
     m.peak = spectrum.largestPeak();
     m.peakRadius = spectrum.largestPeakRadius();
     m.raps = spectrum.rapsPeak();

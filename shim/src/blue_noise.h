@@ -22,7 +22,8 @@
 #pragma once
 
 #include "hash.h"
-#include "patterns.h"
+#include "batch_isa.h"
+#include "dimension.h"
 
 #include <cstddef>
 #include <cstdint>

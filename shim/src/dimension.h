@@ -3,10 +3,6 @@
 // dimension.h — one validated entry of a sampler's dimension layout, with what its pattern precomputed.
 #pragma once
 
-#include "pmj02_family.h"
-#include "poisson_cache.h"
-#include "strata_grid.h"
-
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -18,12 +14,10 @@ struct Dimension {
     uint32_t count = 1;   // k values per pixel sample
     uint32_t setSize = 1; // M = k * N points in the pixel's set
     std::string name;
-    StrataGrid grid;                              // stratified only
-    std::shared_ptr<const PoissonFamily> poisson; // poisson only
-    uint32_t log2Length = 0;                      // sobol, pmj02: L = 2^log2Length is the least power of two >= M
-    std::shared_ptr<const Pmj02Family> pmj02;     // pmj02 only
-    // What any other pattern precomputes for the set (its PatternOps::prepare sets it, its functions read it back
-    // with stateAs): a pattern's state needs no field here.
+    uint32_t log2Length = 0; // L = 2^log2Length, the least power of two >= M (the sequences' length)
+    // What the pattern precomputed for the set (stratified: its strata grid; poisson: the family of stored sets;
+    // pmj02: its family of sequences), owned by the pattern's file: its PatternOps::prepare sets it, its functions
+    // read it back with stateAs. No pattern has a field here.
     std::shared_ptr<const void> patternState;
 
     template <typename State>

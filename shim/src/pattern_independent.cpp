@@ -7,10 +7,16 @@
 #include "blue_noise.h"
 #include "hash.h"
 #include "pattern_registry.h"
-#include "patterns.h"
 #include "simd_avx512.h"
 
 namespace stipple::detail {
+
+template <BatchIsa Isa>
+void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                     const CrossPixelStrata* blue = nullptr);
+void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out,
+                      const CrossPixelStrata* blue = nullptr);
+
 
 void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
     const uint64_t first = uint64_t(p) * dim.arity;

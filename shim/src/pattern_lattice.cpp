@@ -21,6 +21,7 @@
 // spaces its points evenly (large minimum distance); on non-periodic integrands a shifted lattice has a seam at the
 // shift, and its 1D projections are evenly spaced grids with one common offset, so a 1D ramp sees the error of a
 // single jittered offset.
+#include "batch_kernel.h"
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
 #include "sequence_generation.h"
@@ -54,53 +55,15 @@ template <uint32_t Arity>
     for (uint32_t c = 0; c < Arity; ++c) out[c] = fixedToUnitFloat(kLatticeVector[c] * phi + s.shift[c]);
 }
 
-template <uint32_t Arity>
-[[gnu::always_inline]] inline void latticePoints(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
-    for (uint32_t i = 0; i < count; ++i) latticePoint<Arity>(s, first + i, out + size_t(i) * Arity);
-}
-
-template <uint32_t Arity>
-void latticeBaseline(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
-    latticePoints<Arity>(s, first, count, out);
-}
-#if defined(STIPPLE_BATCH_ISA_CLONES)
-template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX2]] void latticeAvx2(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
-    latticePoints<Arity>(s, first, count, out);
-}
-template <uint32_t Arity>
-[[STIPPLE_TARGET_AVX512]] void latticeAvx512(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
-    latticePoints<Arity>(s, first, count, out);
-}
-#endif
-
-template <BatchIsa Isa, uint32_t Arity>
-void latticeBatch(const LatticeSet& s, uint32_t first, uint32_t count, float* out) {
-#if defined(STIPPLE_BATCH_ISA_CLONES)
-    if constexpr (Isa == BatchIsa::Avx512) return latticeAvx512<Arity>(s, first, count, out);
-    if constexpr (Isa == BatchIsa::Avx2) return latticeAvx2<Arity>(s, first, count, out);
-#endif
-    return latticeBaseline<Arity>(s, first, count, out);
-}
-
-template <BatchIsa Isa>
-void fillLattice(const SetKey& set, const Dimension& dim, uint32_t first, uint32_t count, float* out) {
-    const LatticeSet s = latticeSet(set, dim);
-    switch (dim.arity) {
-    case 1: return latticeBatch<Isa, 1>(s, first, count, out);
-    case 2: return latticeBatch<Isa, 2>(s, first, count, out);
-    default: return latticeBatch<Isa, 3>(s, first, count, out);
+// The batch loop and its ISA variants come from batch_kernel.h.
+struct LatticeKernel {
+    using Set = LatticeSet;
+    static Set set(const SetKey& key, const Dimension& dim) { return latticeSet(key, dim); }
+    template <uint32_t Arity>
+    [[gnu::always_inline]] static void point(const Set& s, uint32_t r, float* out) {
+        latticePoint<Arity>(s, r, out);
     }
-}
-
-void pointLattice(const SetKey& set, const Dimension& dim, uint32_t p, float* out) {
-    const LatticeSet s = latticeSet(set, dim);
-    switch (dim.arity) {
-    case 1: return latticePoint<1>(s, p, out);
-    case 2: return latticePoint<2>(s, p, out);
-    default: return latticePoint<3>(s, p, out);
-    }
-}
+};
 
 } // namespace
 
@@ -112,8 +75,8 @@ constinit const PatternOps kLatticePattern{
     .name = "lattice",
     .domain = HashDomain::Lattice,
     .blockKeying = BlockKeying::Sequence,
-    .point = pointLattice,
-    .fill = {fillLattice<BatchIsa::Baseline>, fillLattice<BatchIsa::Avx2>, fillLattice<BatchIsa::Avx512>},
+    .point = kernelPoint<LatticeKernel>,
+    .fill = kernelFills<LatticeKernel>(),
 };
 
 } // namespace stipple::detail

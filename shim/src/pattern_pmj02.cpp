@@ -21,7 +21,7 @@
 #include "batch_isa.h"
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
-#include "patterns.h"
+#include "pmj02_family.h"
 
 #include <bit>
 
@@ -30,6 +30,11 @@
 #endif
 
 namespace stipple::detail {
+
+// pmj02: the key is the set's (before any block); block b continues the set's sequence (pattern_pmj02.cpp).
+template <BatchIsa Isa>
+void fillPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointPmj02(uint64_t key, uint32_t block, const Dimension& dim, uint32_t p, float* out);
 
 namespace {
 
@@ -42,7 +47,7 @@ struct Pmj02Set {
     uint32_t length; // points in the sequence
 
     Pmj02Set(uint64_t key, uint32_t block, const Dimension& dim) {
-        const Pmj02Family& family = *dim.pmj02;
+        const Pmj02Family& family = dim.stateAs<Pmj02Family>();
         length = 1u << family.storedLog2Length();
         // key = hashCombine(key, generation). Block 0 (every fill_pixel) is generation 0 at offset 0: no divisions,
         // and the generation's own mix is a constant, off the call's chain of hashes.
@@ -317,7 +322,7 @@ constinit const PatternOps kPmj02Pattern{
     .domain = HashDomain::Pmj02,
     .blockKeying = BlockKeying::Sequence,
     .limits = {.maxArity = 3, .maxSetSize = 1u << Pmj02Family::kMaxLog2Length},
-    .prepare = [](Dimension& dim) { dim.pmj02 = Pmj02Family::acquire(dim.log2Length); },
+    .prepare = [](Dimension& dim) { dim.patternState = Pmj02Family::acquire(dim.log2Length); },
     .prepareStreamsOnFirstUse = false, // a family generates its sequences on first use
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPmj02(set.key, set.block, dim, p, out); },

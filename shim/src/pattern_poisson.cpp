@@ -15,7 +15,7 @@
 #include "error.h"
 #include "hash.h"
 #include "pattern_registry.h"
-#include "patterns.h"
+#include "poisson_cache.h"
 #include "permutation.h"
 #include "pointsets/pointsets.h"
 #include "simd_avx512.h"
@@ -27,6 +27,15 @@
 #include <vector>
 
 namespace stipple::detail {
+
+template <BatchIsa Isa>
+void fillPoisson(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointPoisson(uint64_t key, const Dimension& dim, uint32_t p, float* out);
+
+// poisson-seed generates its set afresh on every call (the study's cost, kept deliberately); random access to
+// one point therefore goes through a whole generation.
+void fillPoissonSeed(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointPoissonSeed(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 namespace {
 
@@ -143,7 +152,7 @@ template <uint32_t Arity>
 
 // The stored set a key draws from its family.
 const float* cachedSet(uint64_t key, const Dimension& dim) {
-    const PoissonFamily& family = *dim.poisson;
+    const PoissonFamily& family = dim.stateAs<PoissonFamily>();
     return family.set(poissonSetIndex(key, family.setCount()));
 }
 
@@ -239,7 +248,7 @@ constinit const PatternOps kPoissonPattern{
     .name = "poisson",
     .domain = HashDomain::Poisson,
     .blockKeying = BlockKeying::Rekeyed,
-    .prepare = [](Dimension& dim) { dim.poisson = PoissonCache::global().acquire(dim.arity, dim.setSize); },
+    .prepare = [](Dimension& dim) { dim.patternState = PoissonCache::global().acquire(dim.arity, dim.setSize); },
     .prepareStreamsOnFirstUse = true,
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointPoisson(set.key, dim, p, out); },

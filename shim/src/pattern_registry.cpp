@@ -17,6 +17,9 @@ extern const PatternOps kSobolPattern;
 extern const PatternOps kPmj02Pattern;
 extern const PatternOps kLatticePattern;
 extern const PatternOps kHaltonPattern;
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+extern const PatternOps kScratchPattern; // the scratch build's only (shim/tests/scratch_pattern.cpp)
+#endif
 
 namespace {
 
@@ -30,8 +33,15 @@ constexpr const PatternOps* kPatterns[] = {
     &kPmj02Pattern,       // STIPPLE_PATTERN_PMJ02
     &kLatticePattern,     // STIPPLE_PATTERN_LATTICE
     &kHaltonPattern,      // STIPPLE_PATTERN_HALTON
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+    &kScratchPattern, // past the public ids: the scratch build's check that the tests take a new pattern
+#endif
 };
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+static_assert(std::size(kPatterns) == STIPPLE_PATTERN_COUNT + 1, "the public ids in order, then the scratch pattern");
+#else
 static_assert(std::size(kPatterns) == STIPPLE_PATTERN_COUNT, "one entry per public pattern id, in id order");
+#endif
 
 std::string listOf(const std::string* items, size_t count) {
     std::string list;

@@ -19,6 +19,7 @@
 
 #include <stipple/stipple.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -76,11 +77,12 @@ struct PatternOps {
     bool prepareStreamsOnFirstUse = false;
     // stipple_dimension_info's strata per axis; nullptr: the pattern reports none (zeros).
     void (*strata)(const Dimension& dim, uint32_t* axes) = nullptr;
-    // Point p of the block alone, bitwise equal to fill's point p (patterns.h).
+    // Point p of the block alone, bitwise equal to fill's point p.
     PatternPoint point;
     // Points [first, first + count) of the block, one variant per BatchIsa (the same bits in each).
-    PatternFill fill[kBatchIsaCount];
-    PatternStrataFill fillStrata[kBatchIsaCount] = {}; // CrossPixelStrata only, per BatchIsa like fill
+    // (batch_kernel.h's kernelFills makes this row from one kernel.)
+    std::array<PatternFill, kBatchIsaCount> fill;
+    std::array<PatternStrataFill, kBatchIsaCount> fillStrata = {}; // CrossPixelStrata only, per BatchIsa like fill
 };
 
 // The key of block `block` of a set keyed `key` (BlockKeying).

@@ -19,11 +19,28 @@
 #include "batch_isa.h"
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
-#include "patterns.h"
 #include "sequence_generation.h"
 #include "sobol_matrices.h"
 
 namespace stipple::detail {
+
+// The randomisation of one set. perPixel is the plain pattern; the blue-noise
+// variant (blue_noise.h) takes one set per tile of pixels and shifts it per pixel.
+struct SobolSet {
+    uint32_t indexSeed = 0;
+    uint32_t scramble[3] = {0, 0, 0};
+    uint32_t blockBase = 0; // Sobol' block of the set's first M points
+    static SobolSet perPixel(uint64_t key);
+    // Block b of the set (sample indices [b*N, (b+1)*N)): the set's Sobol' block blockBase + b.
+    SobolSet atBlock(uint32_t block) const {
+        SobolSet s = *this;
+        s.blockBase += block;
+        return s;
+    }
+};
+template <BatchIsa Isa>
+void fillSobol(const SobolSet& set, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointSobol(const SobolSet& set, const Dimension& dim, uint32_t p, float* out);
 
 namespace {
 

@@ -29,17 +29,24 @@
 // With the blue-noise flag, the jitter of a point is moved into the pixel's sub-cell of its stratum (named by its
 // cell, the same in every pixel; blue_noise.h), so the pixels of a tile stratify each stratum among themselves.
 #include "batch_isa.h"
-#include "blue_noise.h"
 #include "hash.h"
 #include "pattern_registry.h"
-#include "patterns.h"
+#include "blue_noise.h"
 #include "permutation.h"
 #include "progressive_strata.h"
 #include "simd_avx512.h"
+#include "strata_grid.h"
 
 #include <bit>
+#include <memory>
 
 namespace stipple::detail {
+
+template <BatchIsa Isa>
+void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
+                    const CrossPixelStrata* blue = nullptr);
+void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out,
+                     const CrossPixelStrata* blue = nullptr);
 
 namespace {
 
@@ -354,8 +361,8 @@ inline void permutedPoint(const StratifiedSet& set, const StrataGrid& grid, uint
 template <BatchIsa Isa>
 void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
                     const CrossPixelStrata* blue) {
-    const StratifiedSet set(key, dim.grid);
-    const StrataGrid& grid = dim.grid;
+    const StrataGrid& grid = dim.stateAs<StrataGrid>();
+    const StratifiedSet set(key, grid);
     if (grid.progressive) {
         switch (dim.arity) {
         case 1: return fillProgressive<Isa, 1>(set, grid, first, count, out, blue);
@@ -368,19 +375,20 @@ void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t
 }
 
 void pointStratified(uint64_t key, const Dimension& dim, uint32_t p, float* out, const CrossPixelStrata* blue) {
-    const StratifiedSet set(key, dim.grid);
-    if (!dim.grid.progressive) return permutedPoint(set, dim.grid, p, out, blue);
+    const StrataGrid& grid = dim.stateAs<StrataGrid>();
+    const StratifiedSet set(key, grid);
+    if (!grid.progressive) return permutedPoint(set, grid, p, out, blue);
     if (blue) {
         switch (dim.arity) {
-        case 1: return progressivePoint<1, true>(set, dim.grid, p, out, blue);
-        case 2: return progressivePoint<2, true>(set, dim.grid, p, out, blue);
-        default: return progressivePoint<3, true>(set, dim.grid, p, out, blue);
+        case 1: return progressivePoint<1, true>(set, grid, p, out, blue);
+        case 2: return progressivePoint<2, true>(set, grid, p, out, blue);
+        default: return progressivePoint<3, true>(set, grid, p, out, blue);
         }
     }
     switch (dim.arity) {
-    case 1: return progressivePoint<1, false>(set, dim.grid, p, out, nullptr);
-    case 2: return progressivePoint<2, false>(set, dim.grid, p, out, nullptr);
-    default: return progressivePoint<3, false>(set, dim.grid, p, out, nullptr);
+    case 1: return progressivePoint<1, false>(set, grid, p, out, nullptr);
+    case 2: return progressivePoint<2, false>(set, grid, p, out, nullptr);
+    default: return progressivePoint<3, false>(set, grid, p, out, nullptr);
     }
 }
 
@@ -404,10 +412,13 @@ constinit const PatternOps kStratifiedPattern{
     .blockKeying = BlockKeying::Rekeyed,
     .blueNoise = BlueNoiseMode::CrossPixelStrata,
     .latticeUse = LatticeUse::Strata,
-    .prepare = [](Dimension& dim) { dim.grid = StrataGrid::choose(dim.arity, dim.setSize); },
+    .prepare =
+        [](Dimension& dim) {
+            dim.patternState = std::make_shared<const StrataGrid>(StrataGrid::choose(dim.arity, dim.setSize));
+        },
     .strata =
         [](const Dimension& dim, uint32_t* axes) {
-            for (uint32_t c = 0; c < dim.arity; ++c) axes[c] = dim.grid.axis[c];
+            for (uint32_t c = 0; c < dim.arity; ++c) axes[c] = dim.stateAs<StrataGrid>().axis[c];
         },
     .point = [](const SetKey& set, const Dimension& dim, uint32_t p,
                 float* out) { pointStratified(set.key, dim, p, out); },

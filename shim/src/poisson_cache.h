@@ -79,4 +79,9 @@ private:
     uint64_t clock_ = 0;
 };
 
+// The stored set a "poisson" set key serves: its top 32 bits scaled to [0, setCount) (no division per value).
+constexpr uint32_t poissonSetIndex(uint64_t key, uint32_t setCount) {
+    return static_cast<uint32_t>(((key >> 32) * setCount) >> 32);
+}
+
 } // namespace stipple::detail

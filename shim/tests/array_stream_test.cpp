@@ -121,7 +121,7 @@ BOOST_AUTO_TEST_CASE(unbiased) {
     const uint32_t n = 8, k = 3;
     // f = [sum of coordinates < 0.8 * arity / 2] + product of coordinates: an edge plus a smooth non-periodic part.
     const double exact[3] = {0.4 + 0.5, 0.32 + 0.25, 0};
-    const double critical = stipple::testing::studentCritical(stipple::testing::sidak(0.01, kPatterns * 2), kPixels - 1);
+    const double critical = stipple::statistics::studentTCritical(stipple::testing::sidak(0.01, kPatterns * 2), kPixels - 1);
     for (int pi = 0; pi < kPatterns; ++pi)
         for (uint32_t arity = 1; arity <= 2; ++arity) {
             const Sampler s = makeSampler(patterns[pi], n, 1234);
@@ -288,21 +288,15 @@ BOOST_AUTO_TEST_CASE(errors_and_pattern_calls) {
         limits = stipple_pattern_limits{};
         limits.struct_size = sizeof limits;
         BOOST_REQUIRE_EQUAL(stipple_pattern_get_limits(p, &limits), STIPPLE_OK);
-        stipple_sampler_desc desc{};
-        desc.struct_size = sizeof desc;
-        desc.pattern = p;
-        desc.samples_per_pixel = limits.max_samples_per_pixel + 1;
-        stipple_sampler handle = nullptr;
-        BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &handle), STIPPLE_ERROR_OUT_OF_RANGE);
-        desc.samples_per_pixel = limits.max_samples_per_pixel;
-        BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &handle), STIPPLE_OK);
-        stipple_sampler_release(handle);
+        const char* name = nullptr;
+        BOOST_REQUIRE_EQUAL(stipple_pattern_name(p, &name), STIPPLE_OK);
+        Sampler handle;
+        BOOST_CHECK_EQUAL(Sampler::create(handle, name, limits.max_samples_per_pixel + 1, 0).code(),
+                          STIPPLE_ERROR_OUT_OF_RANGE);
+        BOOST_CHECK(Sampler::create(handle, name, limits.max_samples_per_pixel, 0).ok());
         // The flag is offered exactly where creation accepts it.
-        desc.samples_per_pixel = 16;
-        desc.flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
-        const stipple_status withFlag = stipple_sampler_create(&desc, &handle);
-        if (withFlag == STIPPLE_OK) stipple_sampler_release(handle);
-        BOOST_CHECK_EQUAL(limits.flags == STIPPLE_SAMPLER_FLAG_BLUE_NOISE, withFlag == STIPPLE_OK);
+        const bool withFlag = Sampler::create(handle, name, 16, 0, STIPPLE_SAMPLER_FLAG_BLUE_NOISE).ok();
+        BOOST_CHECK_EQUAL(limits.flags == STIPPLE_SAMPLER_FLAG_BLUE_NOISE, withFlag);
         BOOST_CHECK(limits.flags == 0 || limits.flags == STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
     }
 

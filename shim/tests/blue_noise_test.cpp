@@ -72,33 +72,23 @@ BOOST_AUTO_TEST_CASE(a_tile_of_pixels_stratifies_every_stratum) {
 BOOST_AUTO_TEST_CASE(the_flag_is_refused_for_the_patterns_it_cannot_serve) {
     // With a declared layout and streams only (dimension_count 0): the error names the pattern and the flag, no
     // sampler is returned, and the same description without the flag is accepted.
-    for (uint32_t pattern : kBlueNoiseRefused)
+    for (uint32_t pattern : blueNoiseRefused())
         for (uint32_t dimensions : {0u, 1u}) {
-            stipple_dimension_desc dim{};
-            dim.struct_size = sizeof dim;
-            dim.arity = 2;
-            dim.count = 1;
-            stipple_sampler_desc desc{};
-            desc.struct_size = sizeof desc;
-            desc.pattern = pattern;
-            desc.samples_per_pixel = 16;
-            desc.dimension_count = dimensions;
-            desc.dimensions = dimensions ? &dim : nullptr;
-            desc.flags = kBlue;
-            stipple_sampler s = reinterpret_cast<stipple_sampler>(uintptr_t(1));
-            BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_ERROR_INVALID_ARGUMENT);
-            BOOST_CHECK(s == nullptr);
-            const std::string message = stipple_last_error_message();
+            const std::vector<DimensionSpec> layout =
+                dimensions ? std::vector<DimensionSpec>{{2, 1}} : std::vector<DimensionSpec>{};
+            stipple::Sampler s;
+            const stipple::Status refused = createSampler(s, pattern, 16, 0, layout, kBlue);
+            BOOST_CHECK_EQUAL(refused.code(), STIPPLE_ERROR_INVALID_ARGUMENT);
+            BOOST_CHECK(!s);
+            const std::string& message = refused.message();
             BOOST_CHECK_MESSAGE(message.find(std::string("the ") + patternName(pattern) + " pattern") !=
                                         std::string::npos &&
                                     message.find("STIPPLE_SAMPLER_FLAG_BLUE_NOISE") != std::string::npos &&
                                     message.find("\"stratified\"") != std::string::npos,
                                 patternName(pattern) << ": " << message);
-            desc.flags = 0;
-            BOOST_REQUIRE_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_OK);
-            stipple_sampler_release(s);
+            BOOST_REQUIRE(createSampler(s, pattern, 16, 0, layout).ok());
         }
-    for (uint32_t pattern : kBlueNoisePatterns) { // accepted
+    for (uint32_t pattern : blueNoisePatterns()) { // accepted
         auto s = makeFlagged(pattern, 16, 1, 2, kBlue);
         BOOST_CHECK(s.get() != nullptr);
     }
@@ -206,8 +196,8 @@ double logMeanVariance(const std::vector<double>& v, double mean) {
 BOOST_AUTO_TEST_CASE(the_error_is_blue_at_no_loss_of_per_pixel_mse) {
     constexpr int kImages = 4;
     // One-sided: only a ratio above 1 fails, at family-wise 0.01 over the patterns.
-    const double z = sidakZ(0.02, int(std::size(kBlueNoisePatterns)));
-    for (uint32_t pattern : kBlueNoisePatterns) {
+    const double z = sidakZ(0.02, int(blueNoisePatterns().size()));
+    for (uint32_t pattern : blueNoisePatterns()) {
         const ImageStats plain = measure(pattern, 0, kImages), blue = measure(pattern, kBlue, kImages);
         const double whiteOverBand = blue.mse / blue.band;
         BOOST_CHECK_MESSAGE(whiteOverBand >= 10, patternName(pattern) << ": low-quarter energy white / measured = "
@@ -231,8 +221,8 @@ BOOST_AUTO_TEST_CASE(the_flag_adds_no_low_frequency_error_on_edges) {
     } edges[] = {{"slanted step", {slantedStep, 0.5}}, {"quarter disk", {quarterDisk, 0.5}}};
     const uint32_t ns[] = {16, 64};
     // One-sided: only a gain significantly below 1 fails, at family-wise 0.01.
-    const double z = sidakZ(0.02, int(std::size(kBlueNoisePatterns) * std::size(edges) * std::size(ns)));
-    for (uint32_t pattern : kBlueNoisePatterns)
+    const double z = sidakZ(0.02, int(blueNoisePatterns().size() * std::size(edges) * std::size(ns)));
+    for (uint32_t pattern : blueNoisePatterns())
         for (const auto& edge : edges)
             for (uint32_t n : ns) {
                 std::vector<double> plainBands, blueBands;
@@ -258,8 +248,8 @@ BOOST_AUTO_TEST_CASE(the_flag_adds_no_low_frequency_error_on_edges) {
 BOOST_AUTO_TEST_CASE(the_flag_adds_no_low_frequency_error_on_the_zone_plate) {
     constexpr int kImages = 8;
     const Integrand2 zone{zonePlate, zonePlateIntegral()};
-    const double z = sidakZ(0.02, int(std::size(kBlueNoisePatterns)));
-    for (uint32_t pattern : kBlueNoisePatterns) {
+    const double z = sidakZ(0.02, int(blueNoisePatterns().size()));
+    for (uint32_t pattern : blueNoisePatterns()) {
         std::vector<double> plainBands, blueBands;
         const ImageStats plain = measure(pattern, 0, kImages, zone, 16, &plainBands);
         const ImageStats blue = measure(pattern, kBlue, kImages, zone, 16, &blueBands);

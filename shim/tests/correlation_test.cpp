@@ -39,8 +39,8 @@ double pearson(const std::vector<float>& a, const std::vector<float>& b) {
 } // namespace
 
 BOOST_AUTO_TEST_CASE(dimensions_and_pixels_are_uncorrelated) {
-    const double alpha = sidak(0.01, kPatternCount * 2 * 2 * 2);
-    for (uint32_t pattern : kAllPatterns) {
+    const double alpha = sidak(0.01, patternCount() * 2 * 2 * 2);
+    for (uint32_t pattern : allPatterns()) {
         for (uint32_t n : {16u, 256u}) {
             auto s = makeSampler(pattern, n, 0xc0ffee + n, {{1, 1}, {1, 1}});
             for (int pair = 0; pair < 2; ++pair) {
@@ -71,7 +71,7 @@ BOOST_AUTO_TEST_CASE(dimensions_and_pixels_are_uncorrelated) {
                 }
                 const double mean = sum / count, sd = std::sqrt((sum2 - sum * mean) / (count - 1));
                 const double t = mean / (sd / std::sqrt(double(count)));
-                const double p = studentTwoSidedP(t, count - 1);
+                const double p = stipple::statistics::studentTTwoSidedP(t, count - 1);
                 BOOST_CHECK_MESSAGE(p > alpha, patternName(pattern)
                                                    << " N=" << n << " " << what << ": mean per-pixel r = " << mean
                                                    << ", t = " << t);

@@ -14,7 +14,6 @@
 #include "hash.h"
 #include "owen_scrambling.h"
 #include "pattern_registry.h"
-#include "patterns.h"
 #include "permutation.h"
 #include "pmj02_family.h"
 #include "pmj02_generator.h"

@@ -13,6 +13,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <stipple/stipple.h>
+#include <stipple/stipple.hpp>
 
 #include <cstdint>
 #include <set>
@@ -21,20 +22,16 @@
 
 namespace {
 
+// A streams-only sampler through the kit (stipple.hpp): s is its handle for the C calls under test.
 struct Owned {
+    stipple::Sampler sampler;
     stipple_sampler s = nullptr;
-    ~Owned() { stipple_sampler_release(s); }
 };
 
 void create(Owned& o, const char* pattern, uint32_t n, uint64_t seed) {
-    uint32_t id = 0;
-    BOOST_REQUIRE_EQUAL(stipple_pattern_from_name(pattern, &id), STIPPLE_OK);
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = id;
-    desc.samples_per_pixel = n;
-    desc.seed = seed;
-    BOOST_REQUIRE_MESSAGE(stipple_sampler_create(&desc, &o.s) == STIPPLE_OK, stipple_last_error_message());
+    const stipple::Status status = stipple::Sampler::create(o.sampler, pattern, n, seed);
+    BOOST_REQUIRE_MESSAGE(status.ok(), status.message());
+    o.s = o.sampler.handle();
 }
 
 std::vector<float> stream(const Owned& o, uint32_t px, uint32_t py, uint32_t first, uint32_t count, uint32_t d,

@@ -6,7 +6,7 @@
 // crystal peak, as isotropic as white noise, rho_min over many pixels); 1D served sets keep one point per cell.
 // The stored sets' own quality is tested by the pointsets_* tests.
 #define BOOST_TEST_MODULE poisson_serving
-#include "patterns.h"
+#include "poisson_cache.h"
 #include "sampler_fixture.h"
 #include <stipple/testing/statistics.h>
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,13 +25,19 @@ struct DimensionSpec {
     const char* name = nullptr;
 };
 
-inline stipple_dimension_desc toDesc(const DimensionSpec& spec) {
-    stipple_dimension_desc d{};
-    d.struct_size = sizeof d;
-    d.arity = spec.arity;
-    d.count = spec.count;
-    d.name = spec.name;
-    return d;
+inline const char* patternName(uint32_t pattern) {
+    const char* name = "?";
+    stipple_pattern_name(pattern, &name);
+    return name;
+}
+
+// The kit's creation of a sampler for pattern `pattern` (its id, as the tests loop over ids) with a declared layout
+// of `dims` (none: streams and arrays only): what every test and benchmark creates samplers with.
+inline stipple::Status createSampler(stipple::Sampler& out, uint32_t pattern, uint32_t n, uint64_t seed,
+                                     const std::vector<DimensionSpec>& dims, uint32_t flags = 0) {
+    std::vector<stipple::LayoutDimension> layout;
+    for (const DimensionSpec& d : dims) layout.push_back({d.arity, d.count, d.name ? d.name : ""});
+    return stipple::Sampler::create(out, patternName(pattern), n, seed, layout, flags);
 }
 
 // A test's sampler: the C++ kit's owner (stipple.hpp), so the tests create and release samplers as hosts do;
@@ -47,18 +54,8 @@ private:
 
 inline SamplerPtr makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, const std::vector<DimensionSpec>& dims,
                               uint32_t flags = 0) {
-    std::vector<stipple_dimension_desc> descs;
-    for (const auto& d : dims) descs.push_back(toDesc(d));
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = pattern;
-    desc.samples_per_pixel = n;
-    desc.dimension_count = static_cast<uint32_t>(descs.size());
-    desc.seed = seed;
-    desc.dimensions = descs.empty() ? nullptr : descs.data();
-    desc.flags = flags;
     stipple::Sampler sampler;
-    const stipple::Status status = stipple::Sampler::create(sampler, desc);
+    const stipple::Status status = createSampler(sampler, pattern, n, seed, dims, flags);
     BOOST_REQUIRE_MESSAGE(status.ok(), "stipple_sampler_create: " << status.message());
     return SamplerPtr(std::move(sampler));
 }
@@ -92,24 +89,66 @@ inline std::vector<float> fillPixelUnchecked(stipple_sampler s, uint32_t x, uint
     return out;
 }
 
-inline const char* patternName(uint32_t pattern) {
-    const char* name = "?";
-    stipple_pattern_name(pattern, &name);
-    return name;
+// Every pattern the library serves, in id order, from its own listing (stipple_pattern_count): a pattern added
+// to the registry is in every test that loops over this list without a change here. The scratch build
+// (STIPPLE_TEST_SCRATCH_PATTERN, shim/CMakeLists.txt) checks that: its library serves one pattern past the public
+// ids, the list must end with it, and the tests loop over it alone.
+inline const std::vector<uint32_t>& allPatterns() {
+    static const std::vector<uint32_t> all = [] {
+        uint32_t count = 0;
+        if (stipple_pattern_count(&count) != STIPPLE_OK) throw std::logic_error("stipple_pattern_count failed");
+        std::vector<uint32_t> ids(count);
+        for (uint32_t p = 0; p < count; ++p) ids[p] = p;
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+        // The scratch build: the library must list the scratch pattern last; the tests then run on it alone (the
+        // public patterns have their own run).
+        const char* last = nullptr;
+        if (count != STIPPLE_PATTERN_COUNT + 1 || stipple_pattern_name(count - 1, &last) != STIPPLE_OK ||
+            std::string(last) != STIPPLE_TEST_SCRATCH_PATTERN)
+            throw std::logic_error("the scratch build's library does not list the scratch pattern \""
+                                   STIPPLE_TEST_SCRATCH_PATTERN "\" last");
+        ids.erase(ids.begin(), ids.end() - 1);
+#endif
+        return ids;
+    }();
+    return all;
+}
+inline int patternCount() { return int(allPatterns().size()); }
+
+#if defined(STIPPLE_TEST_SCRATCH_PATTERN)
+} // namespace stipple::test
+namespace stipple::detail {
+uint64_t scratchPatternUses(); // tests/scratch_pattern.cpp: sets the library prepared or computed with it
+}
+namespace stipple::test {
+// The scratch build's check at the end of every test program: the program did reach the scratch pattern (a test
+// that kept a list of its own would not).
+struct ScratchPatternReached {
+    void setup() {}
+    void teardown() {
+        BOOST_CHECK_MESSAGE(stipple::detail::scratchPatternUses() > 0,
+                            "the scratch pattern \"" STIPPLE_TEST_SCRATCH_PATTERN "\" was never used");
+    }
+};
+BOOST_TEST_GLOBAL_FIXTURE(ScratchPatternReached);
+#endif
+
+// The STIPPLE_SAMPLER_FLAG_* bits pattern `pattern` accepts (stipple_pattern_get_limits).
+inline uint32_t acceptedFlags(uint32_t pattern) {
+    stipple_pattern_limits limits{};
+    limits.struct_size = sizeof limits;
+    if (stipple_pattern_get_limits(pattern, &limits) != STIPPLE_OK) throw std::logic_error("stipple_pattern_get_limits");
+    return limits.flags;
 }
 
-// Every pattern of the library: numbers are dense from 0 (stipple.h), so a pattern added to the registry and to
-// STIPPLE_PATTERN_COUNT is in every test that loops over this list without a change here.
-constexpr int kPatternCount = int(STIPPLE_PATTERN_COUNT);
-constexpr std::array<uint32_t, STIPPLE_PATTERN_COUNT> kAllPatterns = [] {
-    std::array<uint32_t, STIPPLE_PATTERN_COUNT> all{};
-    for (uint32_t p = 0; p < all.size(); ++p) all[p] = p;
-    return all;
-}();
-// The patterns that take STIPPLE_SAMPLER_FLAG_BLUE_NOISE (the others refuse it at creation: blue_noise_test). The
-// library's limits say the same (batch_isa_test checks the two lists against stipple_pattern_get_limits).
-constexpr uint32_t kBlueNoisePatterns[] = {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED};
-constexpr uint32_t kBlueNoiseRefused[] = {STIPPLE_PATTERN_POISSON, STIPPLE_PATTERN_POISSON_SEED, STIPPLE_PATTERN_SOBOL,
-                                          STIPPLE_PATTERN_PMJ02,   STIPPLE_PATTERN_LATTICE,      STIPPLE_PATTERN_HALTON};
+// The patterns whose limits accept STIPPLE_SAMPLER_FLAG_BLUE_NOISE, and the others (which refuse it at creation:
+// blue_noise_test checks both against sampler creation).
+inline std::vector<uint32_t> blueNoisePatterns(bool accepted = true) {
+    std::vector<uint32_t> list;
+    for (uint32_t p : allPatterns())
+        if (bool(acceptedFlags(p) & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) == accepted) list.push_back(p);
+    return list;
+}
+inline std::vector<uint32_t> blueNoiseRefused() { return blueNoisePatterns(false); }
 
 } // namespace stipple::test

@@ -171,7 +171,7 @@ BOOST_AUTO_TEST_CASE(pmj02_3d_is_not_worse_than_stratified) {
         auto pmj = makeSampler(STIPPLE_PATTERN_PMJ02, n, 0x9a3d, {{3, 1}});
         auto strat = makeSampler(STIPPLE_PATTERN_STRATIFIED, n, 0x9a3d, {{3, 1}});
         for (const Integrand& in : integrands) {
-            MeanEstimate squared[2];
+            stipple::statistics::MeanEstimate squared[2];
             for (int which = 0; which < 2; ++which) {
                 double sum = 0, sumSq = 0;
                 for (uint32_t pixel = 0; pixel < 512; ++pixel) {
@@ -184,7 +184,7 @@ BOOST_AUTO_TEST_CASE(pmj02_3d_is_not_worse_than_stratified) {
                 const double mean = sum / 512;
                 squared[which] = {mean, (sumSq / 512 - mean * mean) / 511, 512};
             }
-            const double p = welchPValue(squared[0], squared[1]) / 2; // one-sided: pmj02's MSE above stratified's
+            const double p = stipple::statistics::welchTwoSidedP(squared[0], squared[1]) / 2; // one-sided: pmj02's MSE above stratified's
             BOOST_CHECK_MESSAGE(squared[0].mean <= squared[1].mean || p > alpha,
                                 in.name << " N=" << n << ": pmj02 MSE " << squared[0].mean << " vs stratified "
                                         << squared[1].mean << ", one-sided p = " << p);
@@ -266,21 +266,14 @@ BOOST_AUTO_TEST_CASE(pmj02_samples_past_n_are_the_fresh_4n_set) {
 }
 
 BOOST_AUTO_TEST_CASE(pmj02_sets_above_its_limit_are_a_clear_error) {
-    stipple_dimension_desc d = toDesc({2, 2});
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.pattern = STIPPLE_PATTERN_PMJ02;
-    desc.samples_per_pixel = 65536;
-    desc.dimension_count = 1;
-    desc.dimensions = &d;
-    stipple_sampler s = nullptr;
-    BOOST_CHECK_EQUAL(stipple_sampler_create(&desc, &s), STIPPLE_ERROR_OUT_OF_RANGE);
-    BOOST_CHECK(std::string(stipple_last_error_message()).find("pmj02 pattern serves sets of at most 65536") !=
-                std::string::npos);
+    stipple::Sampler s;
+    const stipple::Status status = createSampler(s, STIPPLE_PATTERN_PMJ02, 65536, 0, {{2, 2}});
+    BOOST_CHECK_EQUAL(status.code(), STIPPLE_ERROR_OUT_OF_RANGE);
+    BOOST_CHECK(status.message().find("pmj02 pattern serves sets of at most 65536") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(blue_noise_keeps_every_pixel_valid_and_deterministic) {
-    for (uint32_t pattern : kBlueNoisePatterns)
+    for (uint32_t pattern : blueNoisePatterns())
         for (uint32_t arity : {1u, 2u, 3u})
             for (uint32_t n : {1u, 13u, 64u}) {
                 auto s = makeFlagged(pattern, n, 0xb1, arity, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
@@ -302,9 +295,9 @@ BOOST_AUTO_TEST_CASE(blue_noise_keeps_every_pixel_valid_and_deterministic) {
 }
 
 BOOST_AUTO_TEST_CASE(blue_noise_samples_are_uniform_and_unbiased) {
-    constexpr int kTests = int(std::size(kBlueNoisePatterns)) * 2 * 2;
+    const int kTests = int(blueNoisePatterns().size()) * 2 * 2;
     const double alpha = sidak(0.01, kTests);
-    for (uint32_t pattern : kBlueNoisePatterns)
+    for (uint32_t pattern : blueNoisePatterns())
         for (uint32_t arity : {2u, 3u}) {
             const uint32_t n = pattern == STIPPLE_PATTERN_POISSON_SEED ? 7 : 16;
             auto s = makeFlagged(pattern, n, 0x0b1e + arity, arity, STIPPLE_SAMPLER_FLAG_BLUE_NOISE);
@@ -342,7 +335,7 @@ BOOST_AUTO_TEST_CASE(blue_noise_samples_are_uniform_and_unbiased) {
             }
             const double mean = sum / 512, sd = std::sqrt((sumSq - 512 * mean * mean) / 511);
             const double t = mean / (sd / std::sqrt(512.0));
-            const double p = studentTwoSidedP(t, 511);
+            const double p = stipple::statistics::studentTTwoSidedP(t, 511);
             BOOST_CHECK_MESSAGE(p > alpha, patternName(pattern)
                                                << " arity " << arity << ": t = " << t << ", p = " << p);
         }

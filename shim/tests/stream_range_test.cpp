@@ -8,7 +8,7 @@ using namespace stipple::test;
 
 BOOST_AUTO_TEST_CASE(values_lie_in_unit_interval) {
     const uint32_t counts[] = {1, 2, 3, 5, 7, 13, 97, 256, 1000, 4096};
-    for (uint32_t pattern : kAllPatterns) {
+    for (uint32_t pattern : allPatterns()) {
         for (uint32_t n : counts) {
             // poisson-seed generates per call: fewer pixels at large N keep the test fast.
             const uint32_t pixels = (pattern == STIPPLE_PATTERN_POISSON_SEED && n >= 1000) ? 1 : 3;

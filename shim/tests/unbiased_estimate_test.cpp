@@ -34,10 +34,10 @@ double exactValue(uint32_t arity) {
 } // namespace
 
 BOOST_AUTO_TEST_CASE(estimates_are_unbiased) {
-    constexpr int kTests = kPatternCount * 3 * 2;
+    const int kTests = patternCount() * 3 * 2;
     constexpr uint32_t kPixels = 512;
     const double alpha = sidak(0.01, kTests);
-    for (uint32_t pattern : kAllPatterns) {
+    for (uint32_t pattern : allPatterns()) {
         for (uint32_t arity = 1; arity <= 3; ++arity) {
             for (uint32_t n : {16u, 256u}) {
                 auto s = makeSampler(pattern, n, 0xb1a5ed00 + 31 * arity + n, {{arity, 1}});
@@ -58,7 +58,7 @@ BOOST_AUTO_TEST_CASE(estimates_are_unbiased) {
                 BOOST_REQUIRE_MESSAGE(standardError > 0, patternName(pattern) << " arity " << arity << " N=" << n
                                                                               << ": all 512 estimates identical");
                 const double t = error / standardError;
-                const double pValue = studentTwoSidedP(t, kPixels - 1);
+                const double pValue = stipple::statistics::studentTTwoSidedP(t, kPixels - 1);
                 BOOST_CHECK_MESSAGE(pValue > alpha, patternName(pattern)
                                                         << " arity " << arity << " N=" << n << ": mean " << mean
                                                         << " vs exact " << exactValue(arity) << ", t = " << t

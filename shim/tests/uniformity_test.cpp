@@ -12,14 +12,14 @@
 using namespace stipple::test;
 using namespace stipple::testing;
 
-constexpr int kTests = kPatternCount * 3 * 4 + 1;
+const int kTests = patternCount() * 3 * 4 + 1;
 
 BOOST_AUTO_TEST_CASE(each_sample_is_uniform) {
     const uint32_t counts[] = {1, 7, 16, 97};
     const uint32_t binsPerAxis[] = {0, 64, 8, 4};
     constexpr uint32_t kPixels = 3200;
     const double alpha = sidak(0.01, kTests);
-    for (uint32_t pattern : kAllPatterns) {
+    for (uint32_t pattern : allPatterns()) {
         for (uint32_t arity = 1; arity <= 3; ++arity) {
             for (uint32_t n : counts) {
                 auto s = makeSampler(pattern, n, 0x5eed0000 + 97 * arity + n, {{arity, 1}});

@@ -3,8 +3,6 @@
 
 #include <stipple/testing/statistics.h>
 
-#include <stipple/statistics/student_t.h>
-
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
 
@@ -50,19 +48,6 @@ double sidak(double alpha, int tests) { return 1.0 - std::pow(1.0 - alpha, 1.0 /
 
 double sidakZ(double alpha, int tests) {
     return boost::math::quantile(boost::math::complement(boost::math::normal(), sidak(alpha, tests) / 2));
-}
-
-double studentCritical(double alpha, double degreesOfFreedom) {
-    return statistics::studentTCritical(alpha, degreesOfFreedom);
-}
-
-double studentTwoSidedP(double t, double degreesOfFreedom) { return statistics::studentTTwoSidedP(t, degreesOfFreedom); }
-
-double welchPValue(const MeanEstimate& a, const MeanEstimate& b) {
-    const statistics::WelchDifference d =
-        statistics::welchDifference({a.mean, a.varianceOfMean, double(a.k)}, {b.mean, b.varianceOfMean, double(b.k)});
-    if (d.standardError == 0) return a.mean == b.mean ? 1.0 : 0.0;
-    return studentTwoSidedP(d.difference / d.standardError, d.degreesOfFreedom);
 }
 
 } // namespace stipple::testing

@@ -25,41 +25,19 @@ PixelSampler::PixelSampler(const ShimLibrary& shim, const std::string& pattern, 
                            const SampleLayout& layout)
     : spp_(spp), layout_(layout) {
     const stipple_api& api = shim.api();
-    // "<name>" or "<name>+blue-noise" (the shim's STIPPLE_SAMPLER_FLAG_BLUE_NOISE); names come from the shim.
-    static const std::string kBlueNoise = "+blue-noise";
-    std::string name = pattern;
-    uint32_t flags = 0;
-    if (name.size() > kBlueNoise.size() &&
-        name.compare(name.size() - kBlueNoise.size(), kBlueNoise.size(), kBlueNoise) == 0) {
-        name.resize(name.size() - kBlueNoise.size());
-        flags |= STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
-    }
-    uint32_t patternId = 0;
-    if (api.pattern_from_name(name.c_str(), &patternId) != STIPPLE_OK) {
+    // "<name>" or "<name>+blue-noise": the shim's own parser (stipple.hpp's parsePattern) reads it.
+    uint32_t patternId = 0, flags = 0;
+    const stipple::Status parsed = stipple::parsePattern(pattern, patternId, flags, api);
+    if (!parsed.ok()) {
         // A bad name is the caller's argument, not a shim failure (stipple-render exits with 2 on it).
         std::string known;
         for (const std::string& n : shim.patternNames()) known += (known.empty() ? "" : ", ") + n;
-        throw std::invalid_argument("unknown pattern '" + pattern + "' (" + shim.lastError() + "); expected one of " +
-                                    known + ", optionally followed by " + kBlueNoise);
+        throw std::invalid_argument("unknown pattern '" + pattern + "' (" + parsed.message() + "); expected one of " +
+                                    known + ", optionally followed by +blue-noise");
     }
-    std::vector<stipple_dimension_desc> dims;
-    for (const Dimension& d : layout.dimensions()) {
-        stipple_dimension_desc desc{};
-        desc.struct_size = sizeof(stipple_dimension_desc);
-        desc.arity = d.arity;
-        desc.count = d.count;
-        desc.name = d.name.c_str();
-        dims.push_back(desc);
-    }
-    stipple_sampler_desc desc{};
-    desc.struct_size = sizeof(stipple_sampler_desc);
-    desc.pattern = patternId;
-    desc.samples_per_pixel = spp;
-    desc.dimension_count = uint32_t(dims.size());
-    desc.seed = seed;
-    desc.dimensions = dims.data();
-    desc.flags = flags;
-    const stipple::Status created = stipple::Sampler::create(sampler_, desc, api);
+    std::vector<stipple::LayoutDimension> dims;
+    for (const Dimension& d : layout.dimensions()) dims.push_back({d.arity, d.count, d.name});
+    const stipple::Status created = stipple::Sampler::create(sampler_, pattern, spp, seed, dims, 0, api);
     if (!created.ok())
         throw ShimError("cannot create a '" + pattern + "' sampler with " + std::to_string(spp) + " spp and " +
                         std::to_string(dims.size()) + " dimensions: " + created.message());

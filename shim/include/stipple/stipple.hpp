@@ -165,6 +165,24 @@ inline Status patternNames(std::vector<std::string>& out, const stipple_api& api
     return s;
 }
 
+// A pattern name as hosts write it, "<name>" or "<name>+blue-noise", to its id and STIPPLE_SAMPLER_FLAG_* bits:
+// the library's own parser (stipple_pattern_parse, ABI 1.2); on a 1.1 library, its bare names and the 1.1 flag.
+inline Status parsePattern(const std::string& pattern, uint32_t& id, uint32_t& flags,
+                           const stipple_api& api = linkedApi()) STIPPLE_HPP_MUST_USE;
+inline Status parsePattern(const std::string& pattern, uint32_t& id, uint32_t& flags, const stipple_api& api) {
+    flags = 0;
+    if (kit_detail::hasArrays(api)) return kit_detail::statusOf(api, api.pattern_parse(pattern.c_str(), &id, &flags));
+    if (!kit_detail::hasStreams(api)) return kit_detail::tooOld(api, "stipple::parsePattern", "1.1");
+    static const char kBlueNoise[] = "+blue-noise";
+    const size_t suffix = sizeof kBlueNoise - 1;
+    std::string name = pattern;
+    if (name.size() > suffix && name.compare(name.size() - suffix, suffix, kBlueNoise) == 0) {
+        name.resize(name.size() - suffix);
+        flags = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
+    }
+    return kit_detail::statusOf(api, api.pattern_from_name(name.c_str(), &id));
+}
+
 // What a pattern serves (largest N, largest k * N, largest k, flags), for checks before creating a sampler. The
 // name may carry "+blue-noise". ABI 1.2.
 inline Status patternLimits(const std::string& pattern, stipple_pattern_limits& out,
@@ -227,7 +245,7 @@ public:
                          const std::vector<LayoutDimension>& layout, uint32_t flags = 0,
                          const stipple_api& api = linkedApi()) {
         uint32_t id = 0, nameFlags = 0;
-        Status s = parsePattern(api, pattern, id, nameFlags);
+        Status s = parsePattern(pattern, id, nameFlags, api);
         if (!s.ok()) return out.fail(api, s);
         std::vector<stipple_dimension_desc> dims(layout.size(), stipple_dimension_desc());
         for (size_t d = 0; d < layout.size(); ++d) {
@@ -354,12 +372,6 @@ public:
     }
 
 private:
-    static Status parsePattern(const stipple_api& api, const std::string& pattern, uint32_t& id, uint32_t& flags) {
-        flags = 0;
-        if (kit_detail::hasArrays(api)) return kit_detail::statusOf(api, api.pattern_parse(pattern.c_str(), &id, &flags));
-        if (!api.pattern_from_name) return kit_detail::tooOld(api, "stipple::Sampler", "1.1");
-        return kit_detail::statusOf(api, api.pattern_from_name(pattern.c_str(), &id)); // 1.1: bare names
-    }
     Status fail(const stipple_api& api, const Status& why) {
         reset();
         api_ = &api;

@@ -91,7 +91,12 @@ std::string patternColor(const std::string& pattern) {
         {"lattice", "#44AA99"},          {"halton", "#882255"}};                // Tol's teal and wine
     for (const auto& [name, color] : colors)
         if (pattern == name) return color;
-    return "#000000";
+    // A pattern the table does not name (a new one of the library's list) still gets a colour of its own, never
+    // black: one of Tol's muted colours not above, chosen by its name (FNV-1a), the same on every page and plot.
+    static const char* const more[] = {"#332288", "#88CCEE", "#117733", "#DDCC77", "#CC6677", "#AA4499", "#DDDDDD"};
+    uint32_t h = 2166136261u;
+    for (unsigned char c : pattern) h = (h ^ c) * 16777619u;
+    return more[h % (sizeof more / sizeof more[0])];
 }
 
 std::string patternHeader(const std::string& pattern) {

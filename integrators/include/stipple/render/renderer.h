@@ -20,6 +20,8 @@ namespace stipple::render {
 // The sample patterns the shim that RenderOptions::shim = shimPath selects serves (their one owner), in id
 // order. Loads the library if needed; throws std::runtime_error when none loads.
 std::vector<std::string> patternNames(const std::string& shimPath);
+// Whether that shim serves `pattern` ("<name>" or "<name>+blue-noise", read by the shim's own parser).
+bool patternServed(const std::string& shimPath, const std::string& pattern);
 
 // The integrators a render can name (RenderOptions::integrator), from the renderer's one registry.
 std::vector<std::string> integratorNames();

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
-// The statistics the project's tests decide with: Pearson's chi-square with pooling of sparse cells, Sidak's
-// per-test level, Student's and Welch's t-tests (in the words the tests use; Student's t and Welch's degrees of
-// freedom are statistics/'s, <stipple/statistics/student_t.h>). Distributions come from Boost.Math.
+// The statistics the project's tests decide with besides common/'s Student's t and Welch's test
+// (<stipple/statistics/student_t.h>, included here): Pearson's chi-square with pooling of sparse cells and Sidak's
+// per-test level. Distributions come from Boost.Math.
 #pragma once
+
+#include <stipple/statistics/student_t.h>
 
 #include <vector>
 
@@ -25,20 +27,5 @@ ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::ve
 double sidak(double alpha, int tests);
 // The two-sided critical |z| of a standard normal at Sidak's per-test level.
 double sidakZ(double alpha, int tests);
-
-// The two-sided critical |t| of Student's t with `degreesOfFreedom` at level `alpha`.
-double studentCritical(double alpha, double degreesOfFreedom);
-// Two-sided p-value of Student's t statistic with `degreesOfFreedom`.
-double studentTwoSidedP(double t, double degreesOfFreedom);
-
-// An estimate of a mean from k independent runs: its value, the variance of that mean and k.
-struct MeanEstimate {
-    double mean = 0;
-    double varianceOfMean = 0;
-    int k = 0;
-};
-// Two-sided p-value of Welch's t-test that two means are equal (Welch-Satterthwaite degrees of freedom);
-// 1 when both are noise-free and equal, 0 when noise-free and different.
-double welchPValue(const MeanEstimate& a, const MeanEstimate& b);
 
 } // namespace stipple::testing

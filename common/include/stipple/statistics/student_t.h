@@ -31,5 +31,8 @@ struct WelchDifference {
     double degreesOfFreedom = 0;
 };
 WelchDifference welchDifference(const MeanEstimate& a, const MeanEstimate& b);
+// The two-sided p-value of Welch's test that the two means are equal; 1 when both are noise-free and equal, 0 when
+// noise-free and different.
+double welchTwoSidedP(const MeanEstimate& a, const MeanEstimate& b);
 
 } // namespace stipple::statistics

@@ -48,4 +48,10 @@ WelchDifference welchDifference(const MeanEstimate& a, const MeanEstimate& b) {
     return d;
 }
 
+double welchTwoSidedP(const MeanEstimate& a, const MeanEstimate& b) {
+    const WelchDifference d = welchDifference(a, b);
+    if (d.standardError == 0) return a.mean == b.mean ? 1.0 : 0.0;
+    return studentTTwoSidedP(d.difference / d.standardError, d.degreesOfFreedom);
+}
+
 } // namespace stipple::statistics
