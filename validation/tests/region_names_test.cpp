@@ -15,7 +15,7 @@
 #include <new>
 #include <string>
 
-#include "matrix.h"
+#include "matrix/matrix.h"
 #include "test_vocabulary.h"
 
 using namespace stipple::validation;
