@@ -4,7 +4,7 @@
 // integrand of the battery (battery_integrands.h: smooth, kink, edge and zone-plate classes), through the C ABI.
 //
 //   shim_blue_noise_gain [-o DIR (blue_noise_gain)] [--images I (12)] [--size S (128)] [--ns 16,64,256]
-//                        [--patterns a,b,...] [--boot B (400)] [--threads T]
+//                        [--patterns a,b,...] [--boot B (400)] [--threads T] [--grown]
 //
 // For each pattern x N, I images of S x S pixels are rendered with the flag and I without (image i uses seed
 // kSeed + i; one 2D dimension, one value per sample), and every integrand is estimated at every pixel. Per image
@@ -17,8 +17,14 @@
 // A pattern the library refuses the flag for is reported as refused.
 //
 // Writes DIR/blue_noise_gain.md (per pattern: the table, integrand x N) and DIR/blue_noise_gain.csv.
+// --grown: the grown battery instead (battery_grown.h: checkerboards, gratings |k| <= 2 sqrt(N), thin stripes, axis
+// and near-axis steps, edges, opposite bumps; it depends on N). Writes DIR/blue_noise_grown.md (per pattern and N,
+// per family: the least gain with its interval, how many integrands have an interval wholly below 1, the median
+// gain) and DIR/blue_noise_grown.csv (every integrand). shim/POINTSETS-blue-noise.md is this file for
+// --patterns stratified,independent.
 //
 // stipple-link: shared
+#include "battery_grown.h"
 #include "battery_integrands.h"
 
 #include <stipple/stipple.h>
@@ -32,6 +38,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -137,6 +144,50 @@ ImageStats renderImage(stipple_sampler s, uint32_t n, int size, const std::vecto
     return st;
 }
 
+// The grown battery's per-pixel errors: gratings all at once from per-point powers of exp(2 pi i x) and
+// exp(2 pi i y) (a grating is the real part of their product's sum), the other integrands one by one.
+ImageStats renderGrownImage(stipple_sampler s, uint32_t n, int size, const std::vector<GrownIntegrand>& battery) {
+    std::vector<std::vector<double>> error(battery.size(), std::vector<double>(size_t(size) * size));
+    std::vector<float> points(size_t(n) * 2);
+    int radius = 0;
+    for (const GrownIntegrand& g : battery) radius = std::max({radius, std::abs(g.k[0]), std::abs(g.k[1])});
+    const size_t span = size_t(2 * radius + 1);
+    std::vector<std::complex<double>> ex(size_t(n) * span), ey(size_t(n) * span);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            if (stipple_sampler_fill_pixel(s, uint32_t(x), uint32_t(y), 0, points.data(), points.size()) != STIPPLE_OK)
+                fail(std::string("stipple_sampler_fill_pixel: ") + stipple_last_error_message());
+            for (uint32_t p = 0; p < n; ++p)
+                for (int axis = 0; axis < 2; ++axis) {
+                    std::complex<double>* e = (axis == 0 ? ex.data() : ey.data()) + p * span;
+                    const std::complex<double> w = std::polar(1.0, 2 * 3.14159265358979323846 * points[2 * p + axis]);
+                    e[radius] = 1;
+                    for (int k = 1; k <= radius; ++k) {
+                        e[radius + k] = e[radius + k - 1] * w;
+                        e[radius - k] = std::conj(e[radius + k]);
+                    }
+                }
+            for (size_t g = 0; g < battery.size(); ++g) {
+                const Integrand& in = battery[g].integrand;
+                double sum = 0;
+                if (battery[g].family == "grating") {
+                    const size_t ix = size_t(battery[g].k[0] + radius), iy = size_t(battery[g].k[1] + radius);
+                    for (uint32_t p = 0; p < n; ++p) sum += (ex[p * span + ix] * ey[p * span + iy]).real();
+                } else
+                    for (uint32_t p = 0; p < n; ++p) sum += in(0, &points[2 * size_t(p)]);
+                error[g][size_t(y) * size + x] = (sum / n - in.exact[0]) / std::sqrt(in.variance[0]);
+            }
+        }
+    ImageStats st;
+    for (size_t g = 0; g < battery.size(); ++g) {
+        double sq = 0;
+        for (double e : error[g]) sq += e * e;
+        st.mse.push_back(sq / error[g].size());
+        st.band.push_back(lowBandEnergy(error[g], size));
+    }
+    return st;
+}
+
 struct Interval {
     double value, lo, hi;
 };
@@ -176,6 +227,122 @@ std::string fmt(double v) {
 
 std::string cell(const Interval& i) { return fmt(i.value) + " [" + fmt(i.lo) + ", " + fmt(i.hi) + "]"; }
 
+// Renders images x {plain, flag} of one pattern and N with `render`, in parallel.
+template <class Render>
+void renderPairs(uint32_t id, uint32_t n, int images, int threads, std::vector<ImageStats> (&stats)[2], Render render) {
+    stats[0].assign(size_t(images), {});
+    stats[1].assign(size_t(images), {});
+    std::atomic<int> next{0};
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back([&] {
+            for (int job; (job = next.fetch_add(1)) < 2 * images;) {
+                const bool blue = job % 2 == 1;
+                const int image = job / 2;
+                std::string why;
+                stipple_sampler s = makeSampler(id, n, kSeed + uint64_t(image), blue, &why);
+                if (!s) fail("stipple_sampler_create: " + why);
+                stats[blue][size_t(image)] = render(s);
+                stipple_sampler_release(s);
+            }
+        });
+    for (auto& th : pool) th.join();
+}
+
+int runGrown(const fs::path& outDir, const std::vector<std::string>& patterns, const std::vector<uint32_t>& ns,
+             int images, int size, int boot, int threads) {
+    const fs::path mdPath = outDir / "blue_noise_grown.md", csvPath = outDir / "blue_noise_grown.csv";
+    std::ofstream md(mdPath.string() + ".tmp"), csv(csvPath.string() + ".tmp");
+    csv << "pattern,family,integrand,N,gain,gain_lo,gain_hi,mse_ratio,mse_ratio_lo,mse_ratio_hi\n";
+    md << "# The blue-noise flag on the grown battery\n\n"
+          "Generated by `shim_blue_noise_gain --grown --patterns "
+       << [&] {
+              std::string list;
+              for (const std::string& p : patterns) list += (list.empty() ? "" : ",") + p;
+              return list;
+          }()
+       << " --images " << images << " --size " << size << "`; do not edit by hand.\n\n"
+       << "Low-frequency gain = low-quarter error energy (|f| < 1/8 cycle per pixel, DC excluded) without the flag / "
+          "with it: > 1, the flag removed low-frequency error; < 1, it added some. 95% bootstrap intervals over "
+       << images << " images of " << size << " x " << size
+       << " pixels per side (seeds fixed). Per family of the grown battery (battery_grown.h; gratings: every k with "
+          "|k| <= 2 sqrt(N)): the least gain and its integrand, how many integrands have an interval wholly below 1 "
+          "(the flag raised their low-frequency error), and the median gain. Per-pixel MSE flag / plain: the range of "
+          "point estimates.\n\n";
+    for (const std::string& name : patterns) {
+        uint32_t id = 0;
+        if (stipple_pattern_from_name(name.c_str(), &id) != STIPPLE_OK) fail("unknown pattern \"" + name + "\"");
+        md << "## " << name << "\n\n";
+        std::string refusal;
+        if (stipple_sampler s = makeSampler(id, ns[0], kSeed, true, &refusal))
+            stipple_sampler_release(s);
+        else {
+            md << "Refused by the library: " << refusal << "\n\n";
+            std::cerr << name << ": refused (" << refusal << ")\n";
+            continue;
+        }
+        md << "| N | family | integrands | least gain [95%] | its integrand | intervals below 1 | median gain | MSE "
+              "ratio |\n|---|---|---|---|---|---|---|---|\n";
+        for (uint32_t n : ns) {
+            const std::vector<GrownIntegrand> battery = makeGrownBattery(n);
+            std::vector<ImageStats> stats[2];
+            renderPairs(id, n, images, threads, stats, [&](stipple_sampler s) { return renderGrownImage(s, n, size, battery); });
+            std::map<std::string, std::vector<size_t>> families;
+            std::vector<std::string> order;
+            for (size_t g = 0; g < battery.size(); ++g) {
+                if (!families.count(battery[g].family)) order.push_back(battery[g].family);
+                families[battery[g].family].push_back(g);
+            }
+            std::vector<Interval> gains(battery.size()), ratios(battery.size());
+            for (size_t g = 0; g < battery.size(); ++g) {
+                std::vector<double> band[2], mse[2];
+                for (int b = 0; b < 2; ++b)
+                    for (const ImageStats& st : stats[b]) {
+                        band[b].push_back(st.band[g]);
+                        mse[b].push_back(st.mse[g]);
+                    }
+                gains[g] = ratioOfMeans(band[0], band[1], boot, kSeed ^ (g * 131 + n));
+                ratios[g] = ratioOfMeans(mse[1], mse[0], boot, kSeed ^ (g * 137 + n + 7));
+                csv << name << "," << battery[g].family << ",\"" << battery[g].integrand.name << "\"," << n << ","
+                    << gains[g].value << "," << gains[g].lo << "," << gains[g].hi << "," << ratios[g].value << ","
+                    << ratios[g].lo << "," << ratios[g].hi << "\n";
+            }
+            for (const std::string& family : order) {
+                const std::vector<size_t>& members = families[family];
+                size_t worst = members[0];
+                int below = 0;
+                std::vector<double> values;
+                double mseLo = 1e300, mseHi = 0;
+                int exact = 0;
+                for (size_t g : members) {
+                    if (!std::isfinite(gains[g].value)) { // no error with or without the flag (aligned with the strata)
+                        ++exact;
+                        continue;
+                    }
+                    if (!std::isfinite(gains[worst].value) || gains[g].value < gains[worst].value) worst = g;
+                    below += gains[g].hi < 1;
+                    values.push_back(gains[g].value);
+                    mseLo = std::min(mseLo, ratios[g].value);
+                    mseHi = std::max(mseHi, ratios[g].value);
+                }
+                std::sort(values.begin(), values.end());
+                if (values.empty()) continue;
+                md << "| " << n << " | " << family << " | " << members.size() - exact << (exact ? " (+" + std::to_string(exact) + " exact)" : "") << " | " << cell(gains[worst]) << " | "
+                   << battery[worst].integrand.name << " | " << below << " | " << fmt(values[values.size() / 2])
+                   << " | " << fmt(mseLo) << "-" << fmt(mseHi) << " |\n";
+            }
+            std::cerr << name << " N=" << n << " done\n";
+        }
+        md << "\n";
+    }
+    md.close();
+    csv.close();
+    if (!md || !csv) fail("cannot write " + mdPath.string());
+    fs::rename(mdPath.string() + ".tmp", mdPath);
+    fs::rename(csvPath.string() + ".tmp", csvPath);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -184,6 +351,7 @@ int main(int argc, char** argv) {
     int threads = int(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<uint32_t> ns = {16, 64, 256};
     std::vector<std::string> patterns = {"independent", "stratified", "poisson", "poisson-seed", "sobol", "pmj02"};
+    bool grown = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -200,6 +368,8 @@ int main(int argc, char** argv) {
             boot = std::atoi(value().c_str());
         else if (a == "--threads")
             threads = std::atoi(value().c_str());
+        else if (a == "--grown")
+            grown = true;
         else if (a == "--patterns")
             patterns = splitList(value());
         else if (a == "--ns") {
@@ -211,6 +381,7 @@ int main(int argc, char** argv) {
     if (images < 2 || size < 16 || size % 8 != 0 || boot < 40 || threads < 1 || ns.empty())
         fail("need --images >= 2, --size a multiple of 8 >= 16, --boot >= 40, --threads >= 1, some --ns");
     fs::create_directories(outDir);
+    if (grown) return runGrown(outDir, patterns, ns, images, size, boot, threads);
     const std::vector<Integrand> battery = makeBattery(2);
 
     std::ofstream md(outDir / "blue_noise_gain.md"), csv(outDir / "blue_noise_gain.csv");

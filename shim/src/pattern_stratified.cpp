@@ -403,7 +403,6 @@ constinit const PatternOps kStratifiedPattern{
     .domain = HashDomain::Stratified,
     .blockKeying = BlockKeying::Rekeyed,
     .blueNoise = BlueNoiseMode::CrossPixelStrata,
-    .latticeUse = LatticeUse::Strata,
     .prepare = [](Dimension& dim) { dim.grid = StrataGrid::choose(dim.arity, dim.setSize); },
     .strata =
         [](const Dimension& dim, uint32_t* axes) {

@@ -18,13 +18,11 @@
 
 namespace stipple::detail {
 
-struct CrossPixelStrata; // blue_noise.h: with the blue-noise flag, stratified and independent take one
+struct CrossPixelStrata; // blue_noise.h: with the blue-noise flag, stratified takes one
 
 template <BatchIsa Isa>
-void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
-                     const CrossPixelStrata* blue = nullptr);
-void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out,
-                      const CrossPixelStrata* blue = nullptr);
+void fillIndependent(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out);
+void pointIndependent(uint64_t key, const Dimension& dim, uint32_t p, float* out);
 
 template <BatchIsa Isa>
 void fillStratified(uint64_t key, const Dimension& dim, uint32_t first, uint32_t count, float* out,
