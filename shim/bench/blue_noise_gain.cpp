@@ -87,30 +87,36 @@ stipple_sampler makeSampler(uint32_t pattern, uint32_t n, uint64_t seed, bool bl
 }
 
 // Mean periodogram value over the band 0 < |f| < 1/8 cycle per pixel of an S x S image (white noise of variance
-// v gives v): a DFT over the band's frequencies only, rows first.
+// v gives v): a DFT over the band's frequencies only, rows first. A real image's periodogram is even (P(-k) = P(k)),
+// so the half-plane kx > 0, or kx = 0 and ky > 0, has the band's mean.
 double lowBandEnergy(const std::vector<double>& image, int size) {
     const int kMax = size / 8;
     const double tau = 2 * 3.14159265358979323846;
-    std::vector<std::complex<double>> twiddle(static_cast<size_t>(size));
-    for (int i = 0; i < size; ++i) twiddle[size_t(i)] = std::polar(1.0, -tau * i / size);
-    const int kCount = 2 * kMax + 1;
-    std::vector<std::complex<double>> rows(size_t(size) * kCount); // [y][kx + kMax]
+    std::vector<double> cosine(static_cast<size_t>(size)), sine(static_cast<size_t>(size));
+    for (int i = 0; i < size; ++i) {
+        cosine[size_t(i)] = std::cos(tau * i / size);
+        sine[size_t(i)] = -std::sin(tau * i / size);
+    }
+    std::vector<std::complex<double>> rows(size_t(size) * size_t(kMax)); // [y][kx], 0 <= kx < kMax
     for (int y = 0; y < size; ++y)
-        for (int kx = -kMax; kx <= kMax; ++kx) {
-            std::complex<double> acc = 0;
-            for (int x = 0; x < size; ++x)
-                acc += image[size_t(y) * size + x] * twiddle[size_t(((kx * x) % size + size) % size)];
-            rows[size_t(y) * kCount + (kx + kMax)] = acc;
+        for (int kx = 0; kx < kMax; ++kx) {
+            double re = 0, im = 0;
+            const double* row = &image[size_t(y) * size];
+            for (int x = 0, index = 0; x < size; ++x, index = index + kx < size ? index + kx : index + kx - size) {
+                re += row[x] * cosine[size_t(index)];
+                im += row[x] * sine[size_t(index)];
+            }
+            rows[size_t(y) * kMax + kx] = {re, im};
         }
     double band = 0;
     int bins = 0;
-    for (int ky = -kMax; ky <= kMax; ++ky)
-        for (int kx = -kMax; kx <= kMax; ++kx) {
-            const double f = std::sqrt(double(kx * kx + ky * ky)) / size;
-            if ((kx == 0 && ky == 0) || f >= 0.125) continue;
+    for (int ky = -kMax + 1; ky < kMax; ++ky)
+        for (int kx = 0; kx < kMax; ++kx) {
+            if ((kx == 0 && ky <= 0) || kx * kx + ky * ky >= kMax * kMax) continue;
             std::complex<double> acc = 0;
-            for (int y = 0; y < size; ++y)
-                acc += rows[size_t(y) * kCount + (kx + kMax)] * twiddle[size_t(((ky * y) % size + size) % size)];
+            const int step = (ky % size + size) % size;
+            for (int y = 0, index = 0; y < size; ++y, index = index + step < size ? index + step : index + step - size)
+                acc += rows[size_t(y) * kMax + kx] * std::complex<double>(cosine[size_t(index)], sine[size_t(index)]);
             band += std::norm(acc) / (double(size) * size);
             ++bins;
         }
@@ -144,35 +150,43 @@ ImageStats renderImage(stipple_sampler s, uint32_t n, int size, const std::vecto
     return st;
 }
 
-// The grown battery's per-pixel errors: gratings all at once from per-point powers of exp(2 pi i x) and
-// exp(2 pi i y) (a grating is the real part of their product's sum), the other integrands one by one.
+// The grown battery's per-pixel errors: gratings all at once, sum_p cos(2 pi (kx x_p + ky y_p)) from per-point
+// tables of cos and sin of 2 pi k x_p and 2 pi k y_p (k >= 0; the gratings have kx >= 0), the other integrands one by
+// one.
 ImageStats renderGrownImage(stipple_sampler s, uint32_t n, int size, const std::vector<GrownIntegrand>& battery) {
     std::vector<std::vector<double>> error(battery.size(), std::vector<double>(size_t(size) * size));
     std::vector<float> points(size_t(n) * 2);
     int radius = 0;
     for (const GrownIntegrand& g : battery) radius = std::max({radius, std::abs(g.k[0]), std::abs(g.k[1])});
-    const size_t span = size_t(2 * radius + 1);
-    std::vector<std::complex<double>> ex(size_t(n) * span), ey(size_t(n) * span);
+    // [axis][cos / sin][k][p]
+    std::vector<double> table(size_t(4) * size_t(radius + 1) * n);
+    auto at = [&](int axis, int part, int k) { return &table[((size_t(axis) * 2 + size_t(part)) * size_t(radius + 1) + size_t(k)) * n]; };
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             if (stipple_sampler_fill_pixel(s, uint32_t(x), uint32_t(y), 0, points.data(), points.size()) != STIPPLE_OK)
                 fail(std::string("stipple_sampler_fill_pixel: ") + stipple_last_error_message());
-            for (uint32_t p = 0; p < n; ++p)
-                for (int axis = 0; axis < 2; ++axis) {
-                    std::complex<double>* e = (axis == 0 ? ex.data() : ey.data()) + p * span;
+            for (int axis = 0; axis < 2; ++axis)
+                for (uint32_t p = 0; p < n; ++p) {
                     const std::complex<double> w = std::polar(1.0, 2 * 3.14159265358979323846 * points[2 * p + axis]);
-                    e[radius] = 1;
-                    for (int k = 1; k <= radius; ++k) {
-                        e[radius + k] = e[radius + k - 1] * w;
-                        e[radius - k] = std::conj(e[radius + k]);
+                    std::complex<double> e = 1;
+                    for (int k = 0; k <= radius; ++k, e *= w) {
+                        at(axis, 0, k)[p] = e.real();
+                        at(axis, 1, k)[p] = e.imag();
                     }
                 }
             for (size_t g = 0; g < battery.size(); ++g) {
                 const Integrand& in = battery[g].integrand;
                 double sum = 0;
                 if (battery[g].family == "grating") {
-                    const size_t ix = size_t(battery[g].k[0] + radius), iy = size_t(battery[g].k[1] + radius);
-                    for (uint32_t p = 0; p < n; ++p) sum += (ex[p * span + ix] * ey[p * span + iy]).real();
+                    const int kx = battery[g].k[0], ky = std::abs(battery[g].k[1]);
+                    const double sign = battery[g].k[1] < 0 ? -1.0 : 1.0;
+                    const double *cx = at(0, 0, kx), *sx = at(0, 1, kx), *cy = at(1, 0, ky), *sy = at(1, 1, ky);
+                    double cc = 0, ss = 0;
+                    for (uint32_t p = 0; p < n; ++p) {
+                        cc += cx[p] * cy[p];
+                        ss += sx[p] * sy[p];
+                    }
+                    sum = cc - sign * ss;
                 } else
                     for (uint32_t p = 0; p < n; ++p) sum += in(0, &points[2 * size_t(p)]);
                 error[g][size_t(y) * size + x] = (sum / n - in.exact[0]) / std::sqrt(in.variance[0]);
