@@ -87,9 +87,14 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_INDEPENDENT 0u  /* counter-based hash, no shared RNG state */
 #define STIPPLE_PATTERN_STRATIFIED 1u   /* jittered strata; any N (see README for non-square N) */
 #define STIPPLE_PATTERN_POISSON 2u      /* amortised Poisson disk sets, toroidal, served with a random torus
-                                          * symmetry and shift: 2D/3D near-maximal dart throwing (rho >= 0.76 /
-                                          * 0.72, blue-noise spectrum without crystal peaks); 1D one point per
-                                          * cell (of a shifted grid, rho >= 0.2); shim/POINTSETS.md */
+                                          * symmetry and shift: 2D/3D dart throwing at rho 0.76 / 0.72, whose
+                                          * served spectrum matches fresh dart throwing at that radius (largest
+                                          * periodogram value and RAPS peak within 0.9-1.1x, N = 16-1024,
+                                          * POINTSETS-spectra-dart.md; no crystal peaks; its ring stands above
+                                          * the study's rho 0.52 dart throwing's); 1D one point per cell (of a
+                                          * shifted grid, rho >= 0.2). Not "never worse than stratified": on
+                                          * the grown 2D battery (POINTSETS-grown.md) 0.78x on gratings, 1.3-2.2x
+                                          * on steps and edges at N = 64-256; shim/POINTSETS.md */
 #define STIPPLE_PATTERN_POISSON_SEED 3u /* the study's dart throwing (Algorithm 1), generated per set */
 #define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, nested uniform), padded per dimension */
 #define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points; 3D:
@@ -105,10 +110,12 @@ typedef int32_t stipple_status;
  * pattern): the pixels of each 64 x 64 tile stratify every stratum among themselves through a lattice map hashed
  * per tile from a family, so the per-pixel error is spread as blue noise over the image while each pixel's set
  * keeps exactly the plain pattern's distribution. Measured low-frequency gain (low-quarter error energy without /
- * with the flag; shim/POINTSETS-blue-noise.md, shim_blue_noise_gain --grown, 12 images of 128 x 128 pixels, fixed
- * seeds) at N = 16, 64, 256: above 1 on every integrand of the grown battery (checkerboards 7 x 7 to 24 x 24,
- * gratings cos(2 pi k.x) at every |k| <= 2 sqrt(N), thin stripes, axis and near-axis steps, edges at 16
- * orientations, opposite bumps across a stratum face), no 95% interval below 1. Per-pixel MSE unchanged. Every
+ * with the flag; shim/POINTSETS-blue-noise.md, shim_blue_noise_gain --grown, 8 images of 128 x 128 pixels, fixed
+ * seeds) at N = 16, 64, 256 on the grown battery (checkerboards 7 x 7 to 24 x 24, gratings cos(2 pi k.x) at every
+ * |k| <= 2 sqrt(N), thin stripes, axis and near-axis steps, edges at 16 orientations, opposite bumps across a
+ * stratum face): no integrand's 95% interval lies below 1; the least gain per family is 1.36-17 at N = 16, 1.08-13
+ * at 64, and at 256 2.0-12 except gratings, whose least of 1604 estimates is 0.71 [0.50, 1.39] (that grating's
+ * predicted gain, shim/bench/lattice_search.py: 1.42); median gains 1.6-17. Per-pixel MSE unchanged on average. Every
  * other pattern refuses the flag at creation with STIPPLE_ERROR_INVALID_ARGUMENT and a message saying why:
  * independent has no strata to share, and a lattice map of the unit square put checkerboard and grating error
  * into the low band (2.2-2.4x the plain pattern's on an 8 x 8 checkerboard); for the others a per-pixel shift of a
