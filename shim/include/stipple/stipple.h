@@ -89,7 +89,7 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_POISSON 2u      /* amortised Poisson disk sets, toroidal, served with a random torus
                                           * symmetry and shift: 2D/3D dart throwing at rho 0.76 / 0.72, whose
                                           * served spectrum matches fresh dart throwing at that radius (largest
-                                          * periodogram value and RAPS peak within 0.9-1.1x, N = 16-1024,
+                                          * periodogram value 0.91-1.13x, RAPS peak 0.96-1.03x, N = 16-1024,
                                           * POINTSETS-spectra-dart.md; no crystal peaks; its ring stands above
                                           * the study's rho 0.52 dart throwing's); 1D one point per cell (of a
                                           * shifted grid, rho >= 0.2). Not "never worse than stratified": on
@@ -115,7 +115,7 @@ typedef int32_t stipple_status;
  * |k| <= 2 sqrt(N), thin stripes, axis and near-axis steps, edges at 16 orientations, opposite bumps across a
  * stratum face): no integrand's 95% interval lies below 1; the least gain per family is 1.36-17 at N = 16, 1.08-13
  * at 64, and at 256 2.0-12 except gratings, whose least of 1604 estimates is 0.71 [0.50, 1.39] (that grating's
- * predicted gain, shim/bench/lattice_search.py: 1.42); median gains 1.6-17. Per-pixel MSE unchanged on average. Every
+ * predicted gain, shim/bench/lattice_search.py: 1.42); median gains 1.6-17. Per-pixel MSE unchanged. Every
  * other pattern refuses the flag at creation with STIPPLE_ERROR_INVALID_ARGUMENT and a message saying why:
  * independent has no strata to share, and a lattice map of the unit square put checkerboard and grating error
  * into the low band (2.2-2.4x the plain pattern's on an 8 x 8 checkerboard); for the others a per-pixel shift of a
