@@ -218,12 +218,18 @@ void fillArguments(benchmark::internal::Benchmark* b) {
             for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});
 }
 
-// The patterns that accept the blue-noise flag, plain (0) and flagged (1) next to each other.
+// The patterns whose limits accept the blue-noise flag, plain (0) and flagged (1) next to each other.
 void blueNoiseArguments(benchmark::internal::Benchmark* b) {
-    for (int64_t pattern : {STIPPLE_PATTERN_INDEPENDENT, STIPPLE_PATTERN_STRATIFIED})
+    for (int64_t pattern = 0; pattern < int64_t(STIPPLE_PATTERN_COUNT); ++pattern) {
+        stipple_pattern_limits limits{};
+        limits.struct_size = sizeof limits;
+        if (stipple_pattern_get_limits(uint32_t(pattern), &limits) != STIPPLE_OK ||
+            !(limits.flags & STIPPLE_SAMPLER_FLAG_BLUE_NOISE))
+            continue;
         for (int64_t arity = 1; arity <= 3; ++arity)
             for (int64_t n : {16, 256, 4096})
                 for (int64_t blue : {0, 1}) b->Args({pattern, arity, n, blue});
+    }
 }
 
 // Per-value calls: poisson-seed generates its whole set on every call by design, so it is left out here.
