@@ -132,6 +132,18 @@ TABLES = [
           ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_integrands.h"], served=True,
           command="{bin}/shim_blue_noise_gain -o {tmp} --images 24 --patterns independent,stratified "
                   "&& cp {tmp}/blue_noise_gain.md {out}"),
+    Table("grown", "shim/docs/tables/grown.md",
+          ["shim/bench/battery.cpp", "shim/bench/battery_integrands.h", "shim/bench/battery_grown.h"], served=True,
+          command="{bin}/shim_battery -o {tmp} --sections grown --no-blue --sets 400 --boot 200 --threads 2 "
+                  "--grown-file {out}"),
+    Table("blue-noise-grown", "shim/docs/tables/blue-noise-grown.md",
+          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_grown.h"], served=True,
+          command="{bin}/shim_blue_noise_gain -o {tmp} --grown --patterns stratified,independent --images 8 "
+                  "--size 128 && cp {tmp}/blue_noise_grown.md {out}"),
+    Table("spectra-dart", "shim/docs/tables/spectra-dart.md", ["shim/bench/spectrum.cpp", "shim/bench/dart_reference.h"],
+          served=True,
+          command="{bin}/shim_spectrum --dart --patterns poisson,poisson-seed,independent --arities 2,3 "
+                  "--ns 16,64,256,1024 > {out}"),
     Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"], served=True,
           command="{bin}/shim_progressive_prefixes > {out}"),
     Table("cost", "shim/docs/tables/cost.md", ["shim/bench/shim_bench.cpp", "shim/bench/ratios.py"] + LIBRARY,

@@ -4,7 +4,7 @@
 // host sees it (stipple-link: shared).
 //
 //   shim_battery [-o DIR] [--pointsets FILE] [--sets R (400)] [--boot B (300)] [--threads T] [--quick]
-//                [--patterns a,b,...] [--no-blue] [--sections battery,nested,prefix]
+//                [--patterns a,b,...] [--no-blue] [--sections battery,nested,prefix,grown] [--grown-file F]
 //
 // battery: per pattern (with and without the blue-noise flag) x arity 1..3 x N = 16 .. 4096 (powers of two and
 //   24, 100, 1000, 3000), R randomisations (pixels (67 i, 67 j): each in its own 64 x 64 blue-noise tile, so the
@@ -17,11 +17,18 @@
 // prefix: MSE of the first 4N samples of an N-sample sampler (stream_fill past N) over the MSE of a fresh set of
 //   4N points, per pattern, arity and integrand.
 //
+// grown (not in the default sections): the grown 2D battery (battery_grown.h: checkerboards, gratings |k| <= 2 sqrt(N),
+//   thin stripes, axis and near-axis steps, edges at 16 orientations, opposite bumps across a stratum face) at
+//   N = 16, 64, 256, R pixels per cell (fill_pixel, one 2D dimension): per pattern and family, the MSE ratio to
+//   stratified, geometric mean over the family [95% bootstrap] and the worst member. Written to its own file,
+//   --grown-file F (default DIR/battery-grown.md; shim/docs/tables/grown.md is
+//   `shim_battery --sections grown --no-blue --grown-file shim/docs/tables/grown.md`).
 // Writes DIR/battery.md (all tables) and DIR/battery.csv (every cell); with --pointsets, replaces the part of
 // FILE between "<!-- battery:begin -->" and "<!-- battery:end -->" with the summary tables (written to a
 // temporary file and renamed over FILE, so a failed run never leaves half a file).
 //
 // stipple-link: shared
+#include "battery_grown.h"
 #include "battery_integrands.h"
 
 #include <stipple/stipple.h>
@@ -31,6 +38,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -60,6 +68,7 @@ struct Options {
     bool blue = true;
     std::vector<std::string> patterns; // default: every pattern the library lists
     std::vector<std::string> sections = {"battery", "nested", "prefix"};
+    fs::path grownFile;
 };
 
 [[noreturn]] void fail(const std::string& message) {
@@ -538,6 +547,122 @@ std::string runPrefix(const Options& opt, const std::vector<Variant>& variants) 
     return o.str();
 }
 
+// ---- the grown battery: MSE against stratified per family, N = 16, 64, 256 ----------------------------------------
+
+// Normalised squared errors err[integrand][pixel] of one variant at N over the grown battery; gratings all at once
+// from per-point powers of exp(2 pi i x) and exp(2 pi i y).
+std::vector<std::vector<double>> grownErrors(const Variant& v, uint32_t n, const std::vector<GrownIntegrand>& battery,
+                                             int R) {
+    stipple_sampler s = makeSampler(v, n, {2}, kSeed ^ 0x6e0ull);
+    std::vector<std::vector<double>> err(battery.size(), std::vector<double>(size_t(R)));
+    int radius = 0;
+    for (const GrownIntegrand& g : battery) radius = std::max({radius, std::abs(g.k[0]), std::abs(g.k[1])});
+    const size_t span = size_t(2 * radius + 1);
+    std::vector<std::complex<double>> ex(size_t(n) * span), ey(size_t(n) * span);
+    std::vector<float> pts(size_t(n) * 2);
+    for (int r = 0; r < R; ++r) {
+        uint32_t x, y;
+        replicatePixel(r, x, y);
+        check(stipple_sampler_fill_pixel(s, x, y, 0, pts.data(), pts.size()), "fill_pixel");
+        for (uint32_t p = 0; p < n; ++p)
+            for (int axis = 0; axis < 2; ++axis) {
+                std::complex<double>* e = (axis == 0 ? ex.data() : ey.data()) + p * span;
+                const std::complex<double> w = std::polar(1.0, 2 * detail::kPi * pts[2 * p + axis]);
+                e[radius] = 1;
+                for (int k = 1; k <= radius; ++k) {
+                    e[radius + k] = e[radius + k - 1] * w;
+                    e[radius - k] = std::conj(e[radius + k]);
+                }
+            }
+        for (size_t g = 0; g < battery.size(); ++g) {
+            const Integrand& in = battery[g].integrand;
+            double sum = 0;
+            if (battery[g].family == "grating") {
+                const size_t ix = size_t(battery[g].k[0] + radius), iy = size_t(battery[g].k[1] + radius);
+                for (uint32_t p = 0; p < n; ++p) sum += (ex[p * span + ix] * ey[p * span + iy]).real();
+            } else
+                for (uint32_t p = 0; p < n; ++p) sum += in(0, &pts[2 * size_t(p)]);
+            const double e = sum / n - in.exact[0];
+            err[g][size_t(r)] = e * e / in.variance[0];
+        }
+    }
+    stipple_sampler_release(s);
+    return err;
+}
+
+std::string runGrown(const Options& opt, const std::vector<Variant>& variants) {
+    const std::vector<uint32_t> ns = {16, 64, 256};
+    const int R = opt.sets, B = opt.boot;
+    size_t reference = variants.size();
+    for (size_t v = 0; v < variants.size(); ++v)
+        if (variants[v].pattern == "stratified" && !variants[v].blue) reference = v;
+    if (reference == variants.size()) fail("--sections grown needs stratified among --patterns (the reference)");
+    std::vector<std::vector<GrownIntegrand>> batteries;
+    for (uint32_t n : ns) batteries.push_back(makeGrownBattery(n));
+    // cells[v * ns + n]: per integrand the MSE and B bootstrap means (pixels resampled, the same for all integrands).
+    std::vector<Cell> cells(variants.size() * ns.size());
+    parallelFor(opt.threads, cells.size(), [&](size_t c) {
+        const size_t v = c / ns.size(), n = c % ns.size();
+        cells[c].err = grownErrors(variants[v], ns[n], batteries[n], R);
+        bootstrap(cells[c], B, 0x6e1ull + c);
+        cells[c].err.clear();
+    });
+    std::ostringstream o;
+    o << "# The grown battery: MSE against stratified\n\n"
+      << "Generated by `shim_battery --sections grown" << (opt.blue ? "" : " --no-blue") << " --sets " << R
+      << " --grown-file <this file>`; do not edit by hand. Normalised MSE of every integrand of the grown 2D battery "
+         "(bench/battery_grown.h; it depends on N: gratings cos(2 pi k.x) at every |k| <= 2 sqrt(N), thin stripes a "
+         "quarter stratum wide, steps off the stratum faces, bumps a quarter stratum wide), "
+      << R << " pixels per cell (each its own randomisation; seed 0x" << std::hex << (kSeed ^ 0x6e0ull) << std::dec
+      << "), one 2D dimension through fill_pixel. Per family: the MSE ratio to stratified, geometric mean over the "
+         "family's integrands [95% bootstrap, " << B << " resamples of the pixels] and the worst integrand's ratio. "
+         "Integrands stratified integrates exactly (a checkerboard aligned with its strata) are left out of the "
+         "ratios.\n\n";
+    for (size_t n = 0; n < ns.size(); ++n) {
+        const std::vector<GrownIntegrand>& battery = batteries[n];
+        std::vector<std::string> families;
+        for (const GrownIntegrand& g : battery)
+            if (std::find(families.begin(), families.end(), g.family) == families.end()) families.push_back(g.family);
+        o << "### N = " << ns[n] << "\n\n| pattern |";
+        for (const std::string& f : families) o << " " << f << " |";
+        o << "\n|---|";
+        for (size_t f = 0; f < families.size(); ++f) o << "---|";
+        o << "\n";
+        const Cell& ref = cells[reference * ns.size() + n];
+        for (size_t v = 0; v < variants.size(); ++v) {
+            if (v == reference) continue;
+            const Cell& cell = cells[v * ns.size() + n];
+            o << "| " << variants[v].label() << " |";
+            for (const std::string& family : families) {
+                std::vector<size_t> members;
+                for (size_t g = 0; g < battery.size(); ++g)
+                    if (battery[g].family == family && ref.mse[g] > 1e-30) members.push_back(g);
+                if (members.empty()) {
+                    o << " - |";
+                    continue;
+                }
+                auto geo = [&](int b) {
+                    double s = 0;
+                    for (size_t g : members)
+                        s += std::log((b < 0 ? cell.mse[g] : cell.boot[g][size_t(b)]) /
+                                      (b < 0 ? ref.mse[g] : ref.boot[g][size_t(b)]));
+                    return std::exp(s / double(members.size()));
+                };
+                std::vector<double> resampled(static_cast<size_t>(B));
+                for (int b = 0; b < B; ++b) resampled[size_t(b)] = geo(b);
+                size_t worst = members[0];
+                for (size_t g : members)
+                    if (cell.mse[g] / ref.mse[g] > cell.mse[worst] / ref.mse[worst]) worst = g;
+                o << " " << fmtInterval(fromBoot(geo(-1), resampled)) << "; max " << fmt(cell.mse[worst] / ref.mse[worst])
+                  << " " << battery[worst].integrand.name << " |";
+            }
+            o << "\n";
+        }
+        o << "\n";
+    }
+    return o.str();
+}
+
 void replaceSection(const fs::path& file, const std::string& body) {
     std::ifstream in(file);
     if (!in) fail("cannot read " + file.string());
@@ -585,6 +710,7 @@ int main(int argc, char** argv) {
         else if (a == "--no-blue") opt.blue = false;
         else if (a == "--patterns") opt.patterns = splitList(value());
         else if (a == "--sections") opt.sections = splitList(value());
+        else if (a == "--grown-file") opt.grownFile = value();
         else fail("unknown argument \"" + a + "\" (see the comment at the top of battery.cpp)");
     }
     if (opt.patterns.empty() && !stipple::patternNames(opt.patterns).ok()) fail("the library lists no patterns");
@@ -635,6 +761,19 @@ int main(int argc, char** argv) {
             if (!v.blue && v.pattern != "poisson-seed") pv.push_back(v);
         summary << "### Past N: 4N samples of an N-sample sampler\n\n" << runPrefix(opt, pv) << "\n";
         std::cerr << "prefix: " << fmt(elapsed(), 1) << " s\n";
+    }
+    if (has("grown")) {
+        const std::string table = runGrown(opt, variants);
+        const fs::path file = opt.grownFile.empty() ? opt.outDir / "battery-grown.md" : opt.grownFile;
+        if (file.has_parent_path()) fs::create_directories(file.parent_path());
+        const fs::path tmp = file.string() + ".tmp";
+        {
+            std::ofstream o(tmp);
+            o << table;
+            if (!o) fail("cannot write " + tmp.string());
+        }
+        fs::rename(tmp, file);
+        std::cerr << "grown: " << fmt(elapsed(), 1) << " s, " << file.string() << "\n";
     }
     summary << "(`shim_battery" << (opt.quick ? " --quick" : "") << " --sets " << opt.sets
             << "`, " << fmt(elapsed(), 0) << " s on " << opt.threads << " threads.)\n";

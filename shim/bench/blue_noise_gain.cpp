@@ -4,7 +4,7 @@
 // integrand of the battery (battery_integrands.h: smooth, kink, edge and zone-plate classes), through the C ABI.
 //
 //   shim_blue_noise_gain [-o DIR (blue_noise_gain)] [--images I (12)] [--size S (128)] [--ns 16,64,256]
-//                        [--patterns a,b,...] [--boot B (400)] [--threads T]
+//                        [--patterns a,b,...] [--boot B (400)] [--threads T] [--grown]
 //
 // For each pattern x N, I images of S x S pixels are rendered with the flag and I without (image i uses seed
 // kSeed + i; one 2D dimension, one value per sample), and every integrand is estimated at every pixel. Per image
@@ -17,8 +17,14 @@
 // A pattern the library refuses the flag for is reported as refused.
 //
 // Writes DIR/blue_noise_gain.md (per pattern: the table, integrand x N) and DIR/blue_noise_gain.csv.
+// --grown: the grown battery instead (battery_grown.h: checkerboards, gratings |k| <= 2 sqrt(N), thin stripes, axis
+// and near-axis steps, edges, opposite bumps; it depends on N). Writes DIR/blue_noise_grown.md (per pattern and N,
+// per family: the least gain with its interval, how many integrands have an interval wholly below 1, the median
+// gain) and DIR/blue_noise_grown.csv (every integrand). shim/docs/tables/blue-noise-grown.md is this file for
+// --patterns stratified,independent.
 //
 // stipple-link: shared
+#include "battery_grown.h"
 #include "battery_integrands.h"
 
 #include <stipple/stipple.h>
@@ -33,6 +39,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -67,30 +74,36 @@ stipple::Sampler makeSampler(const std::string& pattern, uint32_t n, uint64_t se
 }
 
 // Mean periodogram value over the band 0 < |f| < 1/8 cycle per pixel of an S x S image (white noise of variance
-// v gives v): a DFT over the band's frequencies only, rows first.
+// v gives v): a DFT over the band's frequencies only, rows first. A real image's periodogram is even (P(-k) = P(k)),
+// so the half-plane kx > 0, or kx = 0 and ky > 0, has the band's mean.
 double lowBandEnergy(const std::vector<double>& image, int size) {
     const int kMax = size / 8;
     const double tau = 2 * 3.14159265358979323846;
-    std::vector<std::complex<double>> twiddle(static_cast<size_t>(size));
-    for (int i = 0; i < size; ++i) twiddle[size_t(i)] = std::polar(1.0, -tau * i / size);
-    const int kCount = 2 * kMax + 1;
-    std::vector<std::complex<double>> rows(size_t(size) * kCount); // [y][kx + kMax]
+    std::vector<double> cosine(static_cast<size_t>(size)), sine(static_cast<size_t>(size));
+    for (int i = 0; i < size; ++i) {
+        cosine[size_t(i)] = std::cos(tau * i / size);
+        sine[size_t(i)] = -std::sin(tau * i / size);
+    }
+    std::vector<std::complex<double>> rows(size_t(size) * size_t(kMax)); // [y][kx], 0 <= kx < kMax
     for (int y = 0; y < size; ++y)
-        for (int kx = -kMax; kx <= kMax; ++kx) {
-            std::complex<double> acc = 0;
-            for (int x = 0; x < size; ++x)
-                acc += image[size_t(y) * size + x] * twiddle[size_t(((kx * x) % size + size) % size)];
-            rows[size_t(y) * kCount + (kx + kMax)] = acc;
+        for (int kx = 0; kx < kMax; ++kx) {
+            double re = 0, im = 0;
+            const double* row = &image[size_t(y) * size];
+            for (int x = 0, index = 0; x < size; ++x, index = index + kx < size ? index + kx : index + kx - size) {
+                re += row[x] * cosine[size_t(index)];
+                im += row[x] * sine[size_t(index)];
+            }
+            rows[size_t(y) * kMax + kx] = {re, im};
         }
     double band = 0;
     int bins = 0;
-    for (int ky = -kMax; ky <= kMax; ++ky)
-        for (int kx = -kMax; kx <= kMax; ++kx) {
-            const double f = std::sqrt(double(kx * kx + ky * ky)) / size;
-            if ((kx == 0 && ky == 0) || f >= 0.125) continue;
+    for (int ky = -kMax + 1; ky < kMax; ++ky)
+        for (int kx = 0; kx < kMax; ++kx) {
+            if ((kx == 0 && ky <= 0) || kx * kx + ky * ky >= kMax * kMax) continue;
             std::complex<double> acc = 0;
-            for (int y = 0; y < size; ++y)
-                acc += rows[size_t(y) * kCount + (kx + kMax)] * twiddle[size_t(((ky * y) % size + size) % size)];
+            const int step = (ky % size + size) % size;
+            for (int y = 0, index = 0; y < size; ++y, index = index + step < size ? index + step : index + step - size)
+                acc += rows[size_t(y) * kMax + kx] * std::complex<double>(cosine[size_t(index)], sine[size_t(index)]);
             band += std::norm(acc) / (double(size) * size);
             ++bins;
         }
@@ -112,6 +125,58 @@ ImageStats renderImage(stipple_sampler s, uint32_t n, int size, const std::vecto
                 double sum = 0;
                 for (uint32_t p = 0; p < n; ++p) sum += battery[g](0, &points[2 * size_t(p)]);
                 error[g][size_t(y) * size + x] = (sum / n - battery[g].exact[0]) / std::sqrt(battery[g].variance[0]);
+            }
+        }
+    ImageStats st;
+    for (size_t g = 0; g < battery.size(); ++g) {
+        double sq = 0;
+        for (double e : error[g]) sq += e * e;
+        st.mse.push_back(sq / error[g].size());
+        st.band.push_back(lowBandEnergy(error[g], size));
+    }
+    return st;
+}
+
+// The grown battery's per-pixel errors: gratings all at once, sum_p cos(2 pi (kx x_p + ky y_p)) from per-point
+// tables of cos and sin of 2 pi k x_p and 2 pi k y_p (k >= 0; the gratings have kx >= 0), the other integrands one by
+// one.
+ImageStats renderGrownImage(stipple_sampler s, uint32_t n, int size, const std::vector<GrownIntegrand>& battery) {
+    std::vector<std::vector<double>> error(battery.size(), std::vector<double>(size_t(size) * size));
+    std::vector<float> points(size_t(n) * 2);
+    int radius = 0;
+    for (const GrownIntegrand& g : battery) radius = std::max({radius, std::abs(g.k[0]), std::abs(g.k[1])});
+    // [axis][cos / sin][k][p]
+    std::vector<double> table(size_t(4) * size_t(radius + 1) * n);
+    auto at = [&](int axis, int part, int k) { return &table[((size_t(axis) * 2 + size_t(part)) * size_t(radius + 1) + size_t(k)) * n]; };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            if (stipple_sampler_fill_pixel(s, uint32_t(x), uint32_t(y), 0, points.data(), points.size()) != STIPPLE_OK)
+                fail(std::string("stipple_sampler_fill_pixel: ") + stipple_last_error_message());
+            for (int axis = 0; axis < 2; ++axis)
+                for (uint32_t p = 0; p < n; ++p) {
+                    const std::complex<double> w = std::polar(1.0, 2 * 3.14159265358979323846 * points[2 * p + axis]);
+                    std::complex<double> e = 1;
+                    for (int k = 0; k <= radius; ++k, e *= w) {
+                        at(axis, 0, k)[p] = e.real();
+                        at(axis, 1, k)[p] = e.imag();
+                    }
+                }
+            for (size_t g = 0; g < battery.size(); ++g) {
+                const Integrand& in = battery[g].integrand;
+                double sum = 0;
+                if (battery[g].family == "grating") {
+                    const int kx = battery[g].k[0], ky = std::abs(battery[g].k[1]);
+                    const double sign = battery[g].k[1] < 0 ? -1.0 : 1.0;
+                    const double *cx = at(0, 0, kx), *sx = at(0, 1, kx), *cy = at(1, 0, ky), *sy = at(1, 1, ky);
+                    double cc = 0, ss = 0;
+                    for (uint32_t p = 0; p < n; ++p) {
+                        cc += cx[p] * cy[p];
+                        ss += sx[p] * sy[p];
+                    }
+                    sum = cc - sign * ss;
+                } else
+                    for (uint32_t p = 0; p < n; ++p) sum += in(0, &points[2 * size_t(p)]);
+                error[g][size_t(y) * size + x] = (sum / n - in.exact[0]) / std::sqrt(in.variance[0]);
             }
         }
     ImageStats st;
@@ -163,6 +228,122 @@ std::string fmt(double v) {
 
 std::string cell(const Interval& i) { return fmt(i.value) + " [" + fmt(i.lo) + ", " + fmt(i.hi) + "]"; }
 
+// Renders images x {plain, flag} of one pattern and N with `render`, in parallel.
+template <class Render>
+void renderPairs(uint32_t id, uint32_t n, int images, int threads, std::vector<ImageStats> (&stats)[2], Render render) {
+    stats[0].assign(size_t(images), {});
+    stats[1].assign(size_t(images), {});
+    std::atomic<int> next{0};
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back([&] {
+            for (int job; (job = next.fetch_add(1)) < 2 * images;) {
+                const bool blue = job % 2 == 1;
+                const int image = job / 2;
+                std::string why;
+                stipple_sampler s = makeSampler(id, n, kSeed + uint64_t(image), blue, &why);
+                if (!s) fail("stipple_sampler_create: " + why);
+                stats[blue][size_t(image)] = render(s);
+                stipple_sampler_release(s);
+            }
+        });
+    for (auto& th : pool) th.join();
+}
+
+int runGrown(const fs::path& outDir, const std::vector<std::string>& patterns, const std::vector<uint32_t>& ns,
+             int images, int size, int boot, int threads) {
+    const fs::path mdPath = outDir / "blue_noise_grown.md", csvPath = outDir / "blue_noise_grown.csv";
+    std::ofstream md(mdPath.string() + ".tmp"), csv(csvPath.string() + ".tmp");
+    csv << "pattern,family,integrand,N,gain,gain_lo,gain_hi,mse_ratio,mse_ratio_lo,mse_ratio_hi\n";
+    md << "# The blue-noise flag on the grown battery\n\n"
+          "Generated by `shim_blue_noise_gain --grown --patterns "
+       << [&] {
+              std::string list;
+              for (const std::string& p : patterns) list += (list.empty() ? "" : ",") + p;
+              return list;
+          }()
+       << " --images " << images << " --size " << size << "`; do not edit by hand.\n\n"
+       << "Low-frequency gain = low-quarter error energy (|f| < 1/8 cycle per pixel, DC excluded) without the flag / "
+          "with it: > 1, the flag removed low-frequency error; < 1, it added some. 95% bootstrap intervals over "
+       << images << " images of " << size << " x " << size
+       << " pixels per side (seeds fixed). Per family of the grown battery (battery_grown.h; gratings: every k with "
+          "|k| <= 2 sqrt(N)): the least gain and its integrand, how many integrands have an interval wholly below 1 "
+          "(the flag raised their low-frequency error), and the median gain. Per-pixel MSE flag / plain: the range of "
+          "point estimates.\n\n";
+    for (const std::string& name : patterns) {
+        uint32_t id = 0;
+        if (stipple_pattern_from_name(name.c_str(), &id) != STIPPLE_OK) fail("unknown pattern \"" + name + "\"");
+        md << "## " << name << "\n\n";
+        std::string refusal;
+        if (stipple_sampler s = makeSampler(id, ns[0], kSeed, true, &refusal))
+            stipple_sampler_release(s);
+        else {
+            md << "Refused by the library: " << refusal << "\n\n";
+            std::cerr << name << ": refused (" << refusal << ")\n";
+            continue;
+        }
+        md << "| N | family | integrands | least gain [95%] | its integrand | intervals below 1 | median gain | MSE "
+              "ratio |\n|---|---|---|---|---|---|---|---|\n";
+        for (uint32_t n : ns) {
+            const std::vector<GrownIntegrand> battery = makeGrownBattery(n);
+            std::vector<ImageStats> stats[2];
+            renderPairs(id, n, images, threads, stats, [&](stipple_sampler s) { return renderGrownImage(s, n, size, battery); });
+            std::map<std::string, std::vector<size_t>> families;
+            std::vector<std::string> order;
+            for (size_t g = 0; g < battery.size(); ++g) {
+                if (!families.count(battery[g].family)) order.push_back(battery[g].family);
+                families[battery[g].family].push_back(g);
+            }
+            std::vector<Interval> gains(battery.size()), ratios(battery.size());
+            for (size_t g = 0; g < battery.size(); ++g) {
+                std::vector<double> band[2], mse[2];
+                for (int b = 0; b < 2; ++b)
+                    for (const ImageStats& st : stats[b]) {
+                        band[b].push_back(st.band[g]);
+                        mse[b].push_back(st.mse[g]);
+                    }
+                gains[g] = ratioOfMeans(band[0], band[1], boot, kSeed ^ (g * 131 + n));
+                ratios[g] = ratioOfMeans(mse[1], mse[0], boot, kSeed ^ (g * 137 + n + 7));
+                csv << name << "," << battery[g].family << ",\"" << battery[g].integrand.name << "\"," << n << ","
+                    << gains[g].value << "," << gains[g].lo << "," << gains[g].hi << "," << ratios[g].value << ","
+                    << ratios[g].lo << "," << ratios[g].hi << "\n";
+            }
+            for (const std::string& family : order) {
+                const std::vector<size_t>& members = families[family];
+                size_t worst = members[0];
+                int below = 0;
+                std::vector<double> values;
+                double mseLo = 1e300, mseHi = 0;
+                int exact = 0;
+                for (size_t g : members) {
+                    if (!std::isfinite(gains[g].value)) { // no error with or without the flag (aligned with the strata)
+                        ++exact;
+                        continue;
+                    }
+                    if (!std::isfinite(gains[worst].value) || gains[g].value < gains[worst].value) worst = g;
+                    below += gains[g].hi < 1;
+                    values.push_back(gains[g].value);
+                    mseLo = std::min(mseLo, ratios[g].value);
+                    mseHi = std::max(mseHi, ratios[g].value);
+                }
+                std::sort(values.begin(), values.end());
+                if (values.empty()) continue;
+                md << "| " << n << " | " << family << " | " << members.size() - exact << (exact ? " (+" + std::to_string(exact) + " exact)" : "") << " | " << cell(gains[worst]) << " | "
+                   << battery[worst].integrand.name << " | " << below << " | " << fmt(values[values.size() / 2])
+                   << " | " << fmt(mseLo) << "-" << fmt(mseHi) << " |\n";
+            }
+            std::cerr << name << " N=" << n << " done\n";
+        }
+        md << "\n";
+    }
+    md.close();
+    csv.close();
+    if (!md || !csv) fail("cannot write " + mdPath.string());
+    fs::rename(mdPath.string() + ".tmp", mdPath);
+    fs::rename(csvPath.string() + ".tmp", csvPath);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -171,6 +352,7 @@ int main(int argc, char** argv) {
     int threads = int(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<uint32_t> ns = {16, 64, 256};
     std::vector<std::string> patterns; // default: every pattern the library lists
+    bool grown = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -187,6 +369,8 @@ int main(int argc, char** argv) {
             boot = std::atoi(value().c_str());
         else if (a == "--threads")
             threads = std::atoi(value().c_str());
+        else if (a == "--grown")
+            grown = true;
         else if (a == "--patterns")
             patterns = splitList(value());
         else if (a == "--ns") {
@@ -198,6 +382,8 @@ int main(int argc, char** argv) {
     if (images < 2 || size < 16 || size % 8 != 0 || boot < 40 || threads < 1 || ns.empty())
         fail("need --images >= 2, --size a multiple of 8 >= 16, --boot >= 40, --threads >= 1, some --ns");
     fs::create_directories(outDir);
+    if (patterns.empty() && !stipple::patternNames(patterns).ok()) fail("the library lists no patterns");
+    if (grown) return runGrown(outDir, patterns, ns, images, size, boot, threads);
     const std::vector<Integrand> battery = makeBattery(2);
 
     std::ofstream md(outDir / "blue_noise_gain.md"), csv(outDir / "blue_noise_gain.csv");
@@ -206,7 +392,6 @@ int main(int argc, char** argv) {
           "flag removed low-frequency error), and per-pixel MSE ratio flag / plain, each with a 95% bootstrap "
           "interval over "
        << images << " images of " << size << " x " << size << " pixels per side (shim_blue_noise_gain).\n\n";
-    if (patterns.empty() && !stipple::patternNames(patterns).ok()) fail("the library lists no patterns");
     for (const std::string& name : patterns) {
         uint32_t id = 0;
         if (stipple_pattern_from_name(name.c_str(), &id) != STIPPLE_OK) fail("unknown pattern \"" + name + "\"");

@@ -16,7 +16,7 @@ import re
 import sys
 
 BOUND = 2.0
-PATTERNS = {0: "independent", 1: "stratified"}
+PATTERNS = {1: "stratified"}  # the patterns that take the flag (independent refuses it)
 
 
 def main(path):

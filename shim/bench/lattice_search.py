@@ -26,6 +26,7 @@ N = 16). 2D maps: det A odd (a bijection of the tile onto the 64 x 64 values). 3
     /usr/bin/python3 lattice_search.py     # deterministic (seeded); prints the chosen A per arity and its shares
     /usr/bin/python3 lattice_search.py --strata-aliasing   # the 2D A of strata and of the square: the models
     /usr/bin/python3 lattice_search.py --square-aliasing   # above and aliasing (battery_gain, below)
+    /usr/bin/python3 lattice_search.py --family strata     # the 2D family of the strata (search_family, below)
 """
 import itertools
 
@@ -205,7 +206,98 @@ def search_aliasing(use, trials=60000, keep=6):
     return ranked[:keep]
 
 
-if __name__ == '__main__' and len(__import__('sys').argv) > 1 and __import__('sys').argv[1].endswith('-aliasing'):
+# The 2D family of the strata (blue_noise.cpp, kMaps2): one map per tile, hashed. A single map sends the modes of some
+# integrand that varies inside a stratum into the low band in every tile (the former A (23, 50; 15, 37): 12 x 12
+# checkerboards at N = 16 and 24 x 24 at N = 64 lost 1.25-1.4x); a family averages it out. Training integrands:
+# checkerboards 7 x 7 to 24 x 24 (also shifted), gratings with |k| <= 2 sqrt(N) at N = 16 and 64 (and a few more),
+# periodic and thin stripes, axis, near-axis and slanted steps, opposite bumps across a stratum face and the
+# battery's 2D edges and bumps, at 4 x 4, 8 x 8 and 16 x 16 strata. The pool: maps whose Taylor gain (white / share,
+# the worst of their value-axis rotations and reflections) is >= 100; greedily, the map that most raises the sum
+# of the three least predicted gains of the family's average (over its maps and the tile's value-axis symmetries).
+def _family_integrands():
+    checker = lambda s, o=0.0: (lambda x, y: ((np.floor(s * x + o) + np.floor(s * y + 0.7 * o)) % 2).astype(float))
+    grating = lambda a, b: (lambda x, y: np.cos(2 * np.pi * (a * x + b * y)))
+    stripes = lambda s, w: (lambda x, y: ((s * x) % 1 < w).astype(float))
+    step = lambda a, t: (lambda x, y: (x * np.cos(t) + y * np.sin(t) < a).astype(float))
+    g = lambda x, c: np.exp(-((x - c) ** 2) / (2 * 0.01 ** 2))
+    bumps = lambda c: (lambda x, y: (g(x, c - 0.02) - g(x, c + 0.02)) * g(y, 0.5))
+    out = [(f'checker{s}', checker(s), (4, 8, 16)) for s in range(7, 25)]
+    out += [(f'stripes{s}', stripes(s, 0.2), (4, 8, 16)) for s in (3, 5, 7, 11, 16)]
+    out += [(f'step{t:.2f}', step(0.37 + 0.1 * np.sin(t), t), (4, 8, 16)) for t in (0, 0.03, 0.1, 0.3, 0.7)]
+    out += [(f'g{a}_{b}', grating(a, b), (4, 8, 16)) for a, b in
+            [(1, 0), (3, 1), (5, 2), (8, 0), (7, 7), (12, 5), (16, 3), (20, 11), (29, 3)]]
+    out += [(name, f, (4, 8, 16)) for name, f in BATTERY.items()]
+    for n in (4, 8):
+        out += [(f'g{a}_{b}', grating(a, b), (n,)) for a in range(2 * n + 1) for b in range(a + 1)
+                if 0 < a * a + b * b <= 4 * n * n]
+    out += [(f'chk{s}', checker(s, 0.31), (4, 8, 16)) for s in (7, 9, 11, 13, 15, 19, 21, 22)]
+    out += [(f'str{s}_{w:g}', stripes(s, w), (4, 8, 16)) for s, w in ((4, 0.05), (9, 0.1), (13, 0.3), (20, 0.1))]
+    out += [(f'stp{t:.2f}', step(0.41, t), (4, 8, 16)) for t in (0.01, 0.05, 0.2, 0.5, 1.2, np.pi / 4)]
+    out += [(f'g{a}_{b}', grating(a, b), (4, 8, 16)) for a, b in
+            [(2, 1), (4, 4), (6, 0), (9, 4), (11, 2), (14, 14), (18, 7), (25, 0), (31, 6)]]
+    out += [(f'bump{c:g}', bumps(c), (4, 8, 16)) for c in (0.25, 0.5)]
+    return out
+
+
+def _in_range(name, n):
+    """Gratings with |k| <= 2 sqrt(N) and periodic stripes of frequency <= 2 sqrt(N) (N = n * n) only."""
+    import re
+    m = re.match(r'g(\d+)_(\d+)$', name)
+    if m:
+        return int(m[1]) ** 2 + int(m[2]) ** 2 <= 4 * n * n
+    m = re.match(r'str(?:ipes)?(\d+)', name)
+    return not m or int(m[1]) <= 2 * n
+
+
+def search_family(size=32, taylor_min=100, pool_size=300, seed=17):
+    modes = {}
+    for name, f, grids in _family_integrands():
+        for n in grids:
+            if _in_range(name, n):
+                modes[(name, n)] = stratum_modes(f, n, sub=2 if name.startswith('g') and name[1].isdigit() else 4)
+    keys = [k for k, (p, _) in modes.items() if p.sum() > 1e-14]
+    power = np.array([modes[k][0] for k in keys])
+    total = power.sum(1) + np.array([modes[k][1] for k in keys])
+    spread = np.array([modes[k][1] for k in keys])
+
+    def variants(At):
+        out = []
+        for A in (At, At[::-1]):
+            for sign in (1, -1):
+                B = A.copy()
+                B[0] *= sign
+                out.append(B)
+        return out
+
+    def gain(band):
+        return WHITE * total / (band + WHITE * spread)
+
+    ks, w = tent_modes(2, 64, 16)
+    rng = np.random.default_rng(seed)
+    pool = []
+    while len(pool) < pool_size:
+        At = rng.integers(0, 64, size=(2, 2))
+        if round(np.linalg.det(At)) % 2 == 0:
+            continue
+        taylor = WHITE / max(share(V, 64, ks, w) for V in variants(At))
+        if taylor >= taylor_min:
+            pool.append((taylor, At, np.mean([power @ leak(np.mod(_all_modes @ V, 64), 64) for V in variants(At)], 0)))
+    family, mean = [], np.zeros(len(keys))
+    for j in range(size):
+        scores = [np.sort(gain((mean * j + c[2]) / (j + 1)))[:3].sum() for c in pool]
+        best = int(np.argmax(scores))
+        family.append(pool[best])
+        mean = (mean * j + pool[best][2]) / (j + 1)
+    g = gain(mean)
+    return family, sorted(zip(g, keys))[:6]
+
+
+if __name__ == '__main__' and __import__('sys').argv[1:] == ['--family', 'strata']:
+    family, worst = search_family()
+    print('kMaps2 = {' + ', '.join('{{%d, %d}, {%d, %d}}' % tuple(A.ravel()) for _, A, _ in family) + '}')
+    print('Taylor gains', [round(t) for t, _, _ in family])
+    print('least predicted gains', [(key, round(float(v), 3)) for v, key in worst])
+elif __name__ == '__main__' and len(__import__('sys').argv) > 1 and __import__('sys').argv[1].endswith('-aliasing'):
     # blue_noise.cpp's 2D A: strata, of these candidates the one with a Taylor-model gain >= 800; square, the first.
     use = __import__('sys').argv[1][2:].split('-')[0]
     for worst, taylor, At, gains in search_aliasing(use):

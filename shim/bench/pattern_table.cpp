@@ -364,7 +364,7 @@ int main(int argc, char** argv) {
         const uint32_t blueNs[] = {16, 256};
         const uint32_t kReplicateTiles = quick ? 16 : 32; // squared, times the images: independent pixels per row
         // The patterns that take the flag (the others refuse it at creation; shim_blue_noise_gain measures why).
-        for (const char* pattern : {"independent", "stratified"})
+        for (const char* pattern : {"stratified"})
             for (uint32_t n : blueNs) {
                 std::vector<std::vector<double>> plainSq;
                 for (uint32_t flag : {0u, 1u}) {
@@ -443,7 +443,7 @@ int main(int argc, char** argv) {
               "set title 'Per-pixel error spectrum, Gaussian integrand, 128x128 pixels'\n"
               "set arrow from 0.125, graph 0 to 0.125, graph 1 nohead dt 2\n"
               "sel(p,f,n)=(strcol(1) eq p && $2 == f && $3 == n) ? $5 : 1/0\n"
-              "plot for [p in 'stratified independent'] for [f in '0 1'] '"
+              "plot for [p in 'stratified'] for [f in '0 1'] '"
            << (outDir / "spectrum_blue.csv").string()
            << "' using 4:(sel(p, f + 0, 16)) with lines title sprintf('%s N=16 %s', p, f eq '1' ? 'blue noise' : "
               "'plain')\n";

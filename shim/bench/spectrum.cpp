@@ -4,13 +4,20 @@
 // the C ABI exactly as a host gets them (one dimension of the given arity, pixel after pixel).
 //
 //   shim_spectrum [--patterns a,b,...] [--arities 1,2,3] [--ns 16,64,...] [--pixels M] [--raps]
+//                 [--dart] [--dart-rhos r1,r2,...]
 //
 // For each pattern x arity x N, over M pixels (default: 64 up to N = 1024, 24 above): the averaged periodogram at
 // integer frequencies 0 < |k| <= K = 2 N^(1/arity) (2 sqrt(N) in 2D; white noise = 1), its largest value ("peak"),
 // the median over annuli of the anisotropy 10 log10(var / mean^2) (dB; white noise averaged over M sets sits
 // near -10 log10(M); none in 1D), rho_min and rho_mean (minimum toroidal distance over the densest packing's, the
 // least and the mean over the pixels), and in 1D the pixels whose set has one point in each cell [c/N, (c+1)/N).
-// --raps adds the radially averaged power spectrum per annulus. Defaults: poisson, poisson-seed and independent
+// --raps adds the radially averaged power spectrum per annulus. --dart adds, in 2D and 3D, rows "dart rho R": plain
+// dart throwing on the torus at radius R d_max (dart_reference.h: not the library; a fresh set per pixel from its
+// own RNG), at poisson's own radius (0.76 in 2D, 0.72 in 3D) and at each --dart-rhos value (default 0.52, 0.65: the
+// study's dart throwing and between), and a last table of served poisson over fresh dart throwing at its radius.
+// They tell what of poisson's peak is the process at its radius and what is the serving (stored sets under torus
+// symmetries and shifts): shim/docs/tables/spectra-dart.md is
+// `shim_spectrum --dart --patterns poisson,poisson-seed,independent --arities 2,3 --ns 16,64,256,1024`. Defaults: poisson, poisson-seed and independent
 // (white noise) at N = 16, 64, 256, 1024, 4096 in 1D, 2D, 3D: the table of shim/POINTSETS.md ("Spectra"),
 // written by `shim_spectrum > shim/POINTSETS-spectra.md`.
 //
@@ -18,6 +25,7 @@
 #include <stipple/stipple.h>
 #include <stipple/stipple.hpp>
 
+#include "dart_reference.h"
 #include "pointsets/pointsets.h"
 #include "pointsets/spectrum.h"
 
@@ -113,13 +121,52 @@ Measures measure(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixels) 
     return m;
 }
 
+// The same measures of fresh dart-throwing sets at radius rho d_max, one per pixel (seeded by the pixel).
+Measures measureDart(double rho, uint32_t arity, uint32_t n, uint32_t pixels) {
+    const int K = std::max(1, int(std::floor(2.0 * std::pow(double(n), 1.0 / arity) + 1e-9)));
+    PowerSpectrum spectrum(int(arity), K, annulusWidth(arity, n));
+    const double r = rho * stipple::detail::pointsets::maxPackingDistance(int(arity), n);
+    Measures m{0, 0, 0, 0, 1e9, 0, 0, {}};
+    for (uint32_t p = 0; p < pixels; ++p) {
+        const uint64_t seed = 0xda27ull * 1000003ull + p;
+        const std::vector<float> values = arity == 2 ? stipple::bench::dartThrowing<2>(n, r, seed)
+                                                     : stipple::bench::dartThrowing<3>(n, r, seed);
+        spectrum.add(values.data(), n);
+        const double rhoSet = relativeRadius(int(arity), values.data(), n);
+        m.rhoMin = std::min(m.rhoMin, rhoSet);
+        m.rhoMean += rhoSet / pixels;
+    }
+    m.peak = spectrum.largestPeak();
+    m.peakRadius = spectrum.largestPeakRadius();
+    m.raps = spectrum.rapsPeak();
+    m.anisotropy = spectrum.medianAnisotropy();
+    m.annuli = spectrum.annuli();
+    return m;
+}
+
+void printRow(uint32_t arity, uint32_t n, uint32_t m, const std::string& name, const Measures& r, bool raps) {
+    const int K = std::max(1, int(std::floor(2.0 * std::pow(double(n), 1.0 / arity) + 1e-9)));
+    char anisotropy[32] = "-", cells[32] = "-";
+    if (!std::isnan(r.anisotropy)) std::snprintf(anisotropy, sizeof anisotropy, "%.1f", r.anisotropy);
+    if (arity == 1) std::snprintf(cells, sizeof cells, "%u/%u", r.cellPixels, m);
+    std::printf("| %u | %u | %u | %d | %s | %.2f (%.0f) | %.2f | %s | %.3f | %.3f | %s |\n", arity, n, m, K, name.c_str(),
+                r.peak, r.peakRadius, r.raps, anisotropy, r.rhoMin, r.rhoMean, cells);
+    if (raps) {
+        std::printf("|   |   |   |   | RAPS | |");
+        for (const auto& a : r.annuli) std::printf(" %d:%.2f", a.radius, a.mean);
+        std::printf(" |   |   |   |   |\n");
+    }
+    std::fflush(stdout);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     std::vector<std::string> patterns = {"poisson", "poisson-seed", "independent"};
     std::vector<uint32_t> arities = {1, 2, 3}, ns = {16, 64, 256, 1024, 4096};
     uint32_t pixels = 0;
-    bool raps = false;
+    bool raps = false, dart = false;
+    std::vector<double> dartRhos = {0.52, 0.65};
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         const auto value = [&]() -> std::string {
@@ -135,31 +182,68 @@ int main(int argc, char** argv) {
             for (const std::string& a : splitList(value())) ns.push_back(parseCount(a, "N", 1u << 16));
         } else if (arg == "--pixels") pixels = parseCount(value(), "pixel count", 4096);
         else if (arg == "--raps") raps = true;
+        else if (arg == "--dart") dart = true;
+        else if (arg == "--dart-rhos") {
+            dartRhos.clear();
+            for (const std::string& a : splitList(value())) {
+                char* end = nullptr;
+                const double rho = std::strtod(a.c_str(), &end);
+                if (*end != '\0' || !(rho > 0 && rho < 0.9)) fail("bad rho \"" + a + "\" (a number in (0, 0.9))");
+                dartRhos.push_back(rho);
+            }
+        }
         else fail("unknown argument \"" + arg + "\" (see the comment at the top of bench/spectrum.cpp)");
     }
+    std::string command = "shim_spectrum";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+    std::printf("# poisson beside dart throwing and white noise: spectra of served sets\n\n"
+                "Generated by `%s` (source `bench/spectrum.cpp`; the header of that file defines every column); do "
+                "not edit by hand. Read with POINTSETS.md, \"Spectra\".%s\n\n",
+                command.c_str(),
+                dart ? " Rows \"dart rho R (fresh)\": plain dart throwing at R d_max, a fresh set per pixel from an RNG "
+                       "of its own (not the library), at poisson's own radius, at the study's (0.52) and between."
+                     : "");
     std::printf("| arity | N | pixels | K | pattern | peak (at abs k) | RAPS peak | anisotropy (dB) | rho_min | rho_mean | one point per cell |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::vector<std::string> servingRows;
     for (uint32_t arity : arities)
         for (uint32_t n : ns) {
             const uint32_t m = pixels ? pixels : n <= 1024 ? 64 : 24;
+            Measures served{};
+            bool haveServed = false;
             for (const std::string& name : patterns) {
                 uint32_t pattern = 0;
                 if (stipple_pattern_from_name(name.c_str(), &pattern) != STIPPLE_OK)
                     fail("unknown pattern \"" + name + "\"");
                 const Measures r = measure(pattern, arity, n, m);
-                const int K = std::max(1, int(std::floor(2.0 * std::pow(double(n), 1.0 / arity) + 1e-9)));
-                char anisotropy[32] = "-", cells[32] = "-";
-                if (!std::isnan(r.anisotropy)) std::snprintf(anisotropy, sizeof anisotropy, "%.1f", r.anisotropy);
-                if (arity == 1) std::snprintf(cells, sizeof cells, "%u/%u", r.cellPixels, m);
-                std::printf("| %u | %u | %u | %d | %s | %.2f (%.0f) | %.2f | %s | %.3f | %.3f | %s |\n", arity, n, m, K, name.c_str(),
-                            r.peak, r.peakRadius, r.raps, anisotropy, r.rhoMin, r.rhoMean, cells);
-                if (raps) {
-                    std::printf("|   |   |   |   | RAPS | |");
-                    for (const auto& a : r.annuli) std::printf(" %d:%.2f", a.radius, a.mean);
-                    std::printf(" |   |   |   |   |\n");
+                printRow(arity, n, m, name, r, raps);
+                if (name == "poisson") served = r, haveServed = true;
+            }
+            if (dart && arity >= 2) {
+                std::vector<double> rhos = {arity == 2 ? 0.76 : 0.72}; // poisson's own radius (pointsets/poisson.cpp)
+                rhos.insert(rhos.end(), dartRhos.begin(), dartRhos.end());
+                for (double rho : rhos) {
+                    char name[48];
+                    std::snprintf(name, sizeof name, "dart rho %.2f (fresh)", rho);
+                    const Measures r = measureDart(rho, arity, n, m);
+                    printRow(arity, n, m, name, r, raps);
+                    if (haveServed && rho == rhos[0]) {
+                        char line[160];
+                        std::snprintf(line, sizeof line, "| %u | %u | %.2f | %.2f | %.1f |", arity, n,
+                                      served.peak / r.peak, served.raps / r.raps, served.anisotropy - r.anisotropy);
+                        servingRows.push_back(line);
+                    }
                 }
-                std::fflush(stdout);
             }
         }
+    if (!servingRows.empty()) {
+        std::printf("\nThe serving: served poisson over fresh dart throwing at poisson's own radius, same N and pixel "
+                    "count. Ratios near 1 and a difference near 0 dB say the stored sets, served under torus "
+                    "symmetries and shifts, average like fresh sets: what peak poisson has above the study's dart "
+                    "throwing is then the process at its larger radius, not the serving; ratios above 1 would be the "
+                    "serving's.\n\n| arity | N | peak ratio | RAPS peak ratio | anisotropy "
+                    "difference (dB) |\n|---|---|---|---|---|\n");
+        for (const std::string& row : servingRows) std::printf("%s\n", row.c_str());
+    }
     return 0;
 }

@@ -2,23 +2,24 @@
 // Copyright 2026 The stipple authors
 // blue_noise.h — screen-space blue noise: neighbouring pixels get sets whose errors cancel at low frequencies.
 //
-// STIPPLE_SAMPLER_FLAG_BLUE_NOISE. One mechanism: a lattice map per tile of 64 x 64 pixels and dimension. Pixel
-// p = (x, y) of the tile maps to c(p) = (A p + o) mod Q per axis (A an integer arity x 2 matrix, o an offset).
-// Mode k of any periodic function of c is, across the tile, a plane wave of pixel frequency A^T k / Q; A (one per
-// arity and LatticeUse, blue_noise.cpp; shim/bench/lattice_search.py) is chosen so that the modes which carry a
-// smooth integrand's error land far above the low band. Within a tile the error of a fixed integrand is
-// therefore a sum of high-frequency gratings, like an ordered dither. Per (tile, dimension, stream, block) a
-// hashed signed permutation of the pixel axes and of the value axes and random offsets make neighbouring tiles
-// and different dimensions use different gratings.
-// - stratified and independent: stratification across pixels. Every stratum (independent: the unit square, once
-//   per point index) is cut into 64 x 64 sub-cells (3D: per axis; 1D: 4096); the pixel's point goes to sub-cell
-//   tent(c(p)) with an offset o hashed per stratum, and keeps its own jitter inside it. tent(c) = 2c below Q/2,
-//   2(Q - 1 - c) + 1 above: a bijection of 0..Q-1 that makes a ramp inside the stratum (what a smooth integrand
-//   is there) a continuous periodic function of c, whose modes decay fast (a sawtooth's do not). 2D and 1D maps
-//   are bijections of the tile onto the sub-cells (det A odd; 1D checked), so a tile's pixels stratify every
-//   stratum among themselves. The offset makes the sub-cell uniform and independent across strata: every
-//   pixel's set has exactly the plain pattern's distribution.
-// Other patterns refuse the flag (pattern_registry.h, BlueNoiseMode::Unsupported).
+// STIPPLE_SAMPLER_FLAG_BLUE_NOISE, for stratified. One mechanism: a lattice map per tile of 64 x 64 pixels and
+// dimension. Pixel p = (x, y) of the tile maps to c(p) = (A p + o) mod Q per axis (A an integer arity x 2 matrix,
+// o an offset). Mode k of any periodic function of c is, across the tile, a plane wave of pixel frequency A^T k / Q;
+// A (blue_noise.cpp; shim/bench/lattice_search.py) is chosen so that the modes which carry a smooth integrand's
+// error land far above the low band. Within a tile the error of a fixed integrand is therefore a sum of
+// high-frequency gratings, like an ordered dither. Per (tile, dimension, stream, block) a hashed signed
+// permutation of the pixel axes and of the value axes, random offsets and (2D) a hashed A of a family make
+// neighbouring tiles and different dimensions use different gratings; the family keeps integrands whose error sits
+// in high modes inside a stratum (checkerboards, gratings near the sample spacing) from landing in the low band
+// in every tile.
+// Every stratum is cut into 64 x 64 sub-cells (3D: per axis; 1D: 4096); the pixel's point goes to sub-cell
+// tent(c(p)) with an offset o hashed per stratum, and keeps its own jitter inside it. tent(c) = 2c below Q/2,
+// 2(Q - 1 - c) + 1 above: a bijection of 0..Q-1 that makes a ramp inside the stratum (what a smooth integrand is
+// there) a continuous periodic function of c, whose modes decay fast (a sawtooth's do not). 2D and 1D maps are
+// bijections of the tile onto the sub-cells (det A odd; 1D checked), so a tile's pixels stratify every stratum
+// among themselves. The offset makes the sub-cell uniform and independent across strata: every pixel's set has
+// exactly the plain pattern's distribution.
+// Other patterns refuse the flag (pattern_registry.h, BlueNoiseMode::Unsupported, with the reason).
 #pragma once
 
 #include "hash.h"
@@ -32,12 +33,6 @@ namespace stipple::detail {
 
 constexpr uint32_t kBlueNoiseTileLog2 = 6; // tiles of 64 x 64 pixels
 
-// What a lattice map serves; each has its own A (blue_noise.cpp).
-enum class LatticeUse : uint32_t {
-    Strata, // stratified: sub-cells of small strata
-    Square, // independent: sub-cells of the unit square
-};
-
 // The lattice map of one (tile, dimension, stream, block): c(p) = (k0 + kx x + ky y) mod Q per axis for the pixel
 // (x, y) of the tile, with the tile's hashed signed permutations folded into the coefficients, so that a pixel's
 // values cost no hash (the sampler keeps the tile's map with its key, sampler.cpp).
@@ -45,7 +40,7 @@ struct LatticeTile {
     uint32_t k0[3] = {0, 0, 0}, kx[3] = {0, 0, 0}, ky[3] = {0, 0, 0};
     uint32_t mask = 0; // Q - 1
     LatticeTile() = default;
-    LatticeTile(uint64_t tileKey, uint32_t arity, LatticeUse use);
+    LatticeTile(uint64_t tileKey, uint32_t arity);
 };
 
 // The lattice map of one (tile, dimension, stream, block) at one pixel: c(p) without the offset, per axis.

@@ -41,7 +41,7 @@ enum class BlockKeying : uint32_t {
 
 // What STIPPLE_SAMPLER_FLAG_BLUE_NOISE does with the pattern (blue_noise.h).
 enum class BlueNoiseMode : uint32_t {
-    // The pixels of a tile stratify each stratum among themselves: fillStrata, with the lattice of latticeUse.
+    // The pixels of a tile stratify each stratum among themselves: fillStrata, with a lattice map of blue_noise.h.
     CrossPixelStrata,
     // The flag is refused at sampler creation (STIPPLE_ERROR_INVALID_ARGUMENT naming the pattern and the flag):
     // no mechanism here keeps the pattern's low-frequency error at or below its plain level on every integrand of
@@ -68,7 +68,10 @@ struct PatternOps {
     HashDomain domain;
     BlockKeying blockKeying;
     BlueNoiseMode blueNoise = BlueNoiseMode::Unsupported;
-    LatticeUse latticeUse = LatticeUse::Strata; // CrossPixelStrata only
+    // Unsupported only: why, for the refusal's message (sampler_create.cpp) after "which the <name> pattern does
+    // not support: ".
+    const char* blueNoiseRefusal = "a per-pixel shift of a tile-shared set adds low-frequency error on non-periodic "
+                                   "integrands (edges, ramps) and breaks the set's stratification";
     PatternLimits limits = {};
     // The pattern's precomputed state of a set (Dimension's arity, count, setSize and log2Length are set):
     // nullptr when it has none. Streams are prepared when the sampler is created, or on their first use when

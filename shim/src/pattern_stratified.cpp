@@ -411,7 +411,6 @@ constinit const PatternOps kStratifiedPattern{
     .domain = HashDomain::Stratified,
     .blockKeying = BlockKeying::Rekeyed,
     .blueNoise = BlueNoiseMode::CrossPixelStrata,
-    .latticeUse = LatticeUse::Strata,
     .prepare =
         [](Dimension& dim) {
             dim.patternState = std::make_shared<const StrataGrid>(StrataGrid::choose(dim.arity, dim.setSize));

@@ -106,7 +106,7 @@ void Sampler::fillBlueNoise(const SetRef& set, const SetKey& pixel, const Dimens
         const uint64_t key =
             keyBlock(ops_, streamWord(setKeyFrom(tileSeedKey_, tileX, tileY, set.d), set.streamArity), set.block).key;
         memo = {&ops_, tileSeedKey_, tileX, tileY, set.d, set.streamArity, set.block, dim.arity, key, {}};
-        memo.lattice = LatticeTile(key, dim.arity, ops_.latticeUse);
+        memo.lattice = LatticeTile(key, dim.arity);
     }
     switch (ops_.blueNoise) {
     case BlueNoiseMode::CrossPixelStrata: {

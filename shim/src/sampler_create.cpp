@@ -92,9 +92,7 @@ Sampler* createSampler(const stipple_sampler_desc& desc) {
     if ((desc.flags & STIPPLE_SAMPLER_FLAG_BLUE_NOISE) != 0 && pattern->blueNoise == BlueNoiseMode::Unsupported)
         throw Error(STIPPLE_ERROR_INVALID_ARGUMENT,
                     std::string("desc->flags has STIPPLE_SAMPLER_FLAG_BLUE_NOISE, which the ") + pattern->name +
-                        " pattern does not support: a per-pixel shift of a tile-shared set adds low-frequency "
-                        "error on non-periodic integrands (edges, ramps) and breaks the set's stratification; "
-                        "the flag is supported by " +
+                        " pattern does not support: " + pattern->blueNoiseRefusal + "; the flag is supported by " +
                         blueNoisePatternList());
     // Streams serve sets of N points of every pattern, so N itself must be a set the pattern serves.
     if (desc.samples_per_pixel > pattern->limits.maxSetSize)

@@ -28,9 +28,6 @@ void progressiveAvx512(const ProgressiveKernelArgs& args, uint32_t arity, uint32
 // missed store forwarding).
 void progressiveBlueAvx512(const ProgressiveKernelArgs& args, const CrossPixelStrata& blue, uint32_t arity,
                            uint32_t first, uint32_t count, float* out);
-// The independent pattern with the blue-noise flag (pattern_independent.cpp): the set's key.
-void independentBlueAvx512(uint64_t key, const CrossPixelStrata& blue, uint32_t arity, uint32_t first, uint32_t count,
-                           float* out);
 
 // A poisson set served in its layered order (pattern_poisson.cpp): position p reads stored point
 // p ^ (orderSeed & (bit_floor(p) - 1)), output axis c its axis source[c], then shift + sign * x wrapped into [0,1).

@@ -92,9 +92,14 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_INDEPENDENT 0u  /* counter-based hash, no shared RNG state */
 #define STIPPLE_PATTERN_STRATIFIED 1u   /* jittered strata; any N (see README for non-square N) */
 #define STIPPLE_PATTERN_POISSON 2u      /* amortised Poisson disk sets, toroidal, served with a random torus
-                                          * symmetry and shift: 2D/3D near-maximal dart throwing (rho >= 0.76 /
-                                          * 0.72, blue-noise spectrum without crystal peaks); 1D one point per
-                                          * cell (of a shifted grid, rho >= 0.2); shim/POINTSETS.md */
+                                          * symmetry and shift: 2D/3D dart throwing at rho 0.76 / 0.72, whose
+                                          * served spectrum matches fresh dart throwing at that radius (largest
+                                          * periodogram value 0.91-1.13x, RAPS peak 0.96-1.03x, N = 16-1024,
+                                          * shim/docs/tables/spectra-dart.md; no crystal peaks; its ring stands above
+                                          * the study's rho 0.52 dart throwing's); 1D one point per cell (of a
+                                          * shifted grid, rho >= 0.2). Not "never worse than stratified": on
+                                          * the grown 2D battery (shim/docs/tables/grown.md) 0.78x on gratings, 1.3-2.2x
+                                          * on steps and edges at N = 64-256; shim/POINTSETS.md */
 #define STIPPLE_PATTERN_POISSON_SEED 3u /* the study's dart throwing (Algorithm 1), generated per set */
 #define STIPPLE_PATTERN_SOBOL 4u        /* Owen-scrambled Sobol' (hash-based, nested uniform), padded per dimension */
 #define STIPPLE_PATTERN_PMJ02 5u        /* progressive multi-jittered (0,2) sequences; sets <= 65536 points; 3D:
@@ -106,17 +111,23 @@ typedef int32_t stipple_status;
 #define STIPPLE_PATTERN_COUNT 8u
 
 /* ---- sampler flags (stipple_sampler_desc.flags) ------------------------------------------------------ */
-/* Screen-space blue noise, for STIPPLE_PATTERN_STRATIFIED and STIPPLE_PATTERN_INDEPENDENT only: the pixels of
- * each 64 x 64 tile stratify every stratum among themselves, so the per-pixel error is spread as blue noise over
- * the image while each pixel's set keeps exactly the plain pattern's distribution. Measured on the 2D integrand
- * battery at N = 16, 64, 256 (shim/POINTSETS.md): low-frequency error 580-1180x (stratified) / 18-1280x
- * (independent) lower than without the flag on smooth integrands, 5.0-16x / 4.5-14.5x on edges (slanted step,
- * quarter disk, occluded quad light), 1.1-1.8x / 1.0x on the Genz discontinuous family, on the zone plate
- * (aliasing) 1.6-20x / 1.04-1.06x. Not lower on every integrand: on checkerboards with squares near the
- * pixel's sample spacing it can be higher (independent on 8 x 8 squares 2.2-2.4x at N = 16-256; stratified
- * 1.25-1.4x on 12 x 12 at N = 16 and 24 x 24 at N = 64). Per-pixel MSE unchanged (0.92-1.07x). The other patterns refuse the flag at creation with STIPPLE_ERROR_INVALID_ARGUMENT
- * (a per-pixel shift of a tile-shared set added low-frequency error on non-periodic integrands). Works for
- * declared layouts and streams, in every block. Unknown bits are rejected. */
+/* Screen-space blue noise, for STIPPLE_PATTERN_STRATIFIED only (stipple_pattern_get_limits' flags say so per
+ * pattern): the pixels of each 64 x 64 tile stratify every stratum among themselves through a lattice map hashed
+ * per tile from a family, so the per-pixel error is spread as blue noise over the image while each pixel's set
+ * keeps exactly the plain pattern's distribution. Measured low-frequency gain (low-quarter error energy without /
+ * with the flag; shim/docs/tables/blue-noise-grown.md, shim_blue_noise_gain --grown, 8 images of 128 x 128 pixels, fixed
+ * seeds) at N = 16, 64, 256 on the grown battery (checkerboards 7 x 7 to 24 x 24, gratings cos(2 pi k.x) at every
+ * |k| <= 2 sqrt(N), thin stripes, axis and near-axis steps, edges at 16 orientations, opposite bumps across a
+ * stratum face): no integrand's 95% interval lies below 1; the least gain per family is 1.36-17 at N = 16, 1.08-13
+ * at 64, and at 256 2.0-12 except gratings, whose least of 1604 estimates is 0.71 [0.50, 1.39] (that grating's
+ * predicted gain, shim/bench/lattice_search.py: 1.42); median gains 1.6-17. On the standard 2D battery
+ * (shim_blue_noise_gain --patterns stratified, 12 images): 200-670x on smooth integrands, 4.7-15x on edges,
+ * 1.1-1.7x on the Genz discontinuous family, 1.35-15x on the zone plate. Per-pixel MSE unchanged. Every
+ * other pattern refuses the flag at creation with STIPPLE_ERROR_INVALID_ARGUMENT and a message saying why:
+ * independent has no strata to share, and a lattice map of the unit square put checkerboard and grating error
+ * into the low band (2.2-2.4x the plain pattern's on an 8 x 8 checkerboard); for the others a per-pixel shift of a
+ * tile-shared set added low-frequency error on non-periodic integrands. Works for declared layouts and streams, in
+ * every block. Unknown bits are rejected. */
 #define STIPPLE_SAMPLER_FLAG_BLUE_NOISE 1u
 
 /* ---- limits ----------------------------------------------------------------------------------------- */
