@@ -12,7 +12,9 @@ prints); the observers' votes end up in FOLDER/votes/ as the server stores them.
 (which crop is which pattern: the page never loads it) to give each observer a latent quality per pattern:
 
   --truth flip   (default) people see what mean FLIP sees: per set, the crop with the lowest mean FLIP is `--spread`
-                 JOD (default 3) above the one with the highest, the others placed linearly between by FLIP.
+                 JOD (default 1.5, the spacing validation.perceptual_browser checks recovery at) above the one with
+                 the highest, the others placed linearly between by FLIP. Far apart crops make 12 observers nearly
+                 unanimous (3 JOD: 98% preference), where scaling by maximum likelihood overstates the distance.
   --truth none   no visible difference between the patterns (the null).
 
 Each observer ranks a trial by latent quality plus Thurstone Case V noise (1 JOD = 75% preference), sees the control
@@ -151,7 +153,7 @@ def main(argv):
     ap.add_argument("--observers", type=int, default=12)
     ap.add_argument("--careless", type=int, default=0)
     ap.add_argument("--truth", choices=("flip", "none"), default="flip")
-    ap.add_argument("--spread", type=float, default=3.0, help="JOD between a set's best and worst FLIP (flip)")
+    ap.add_argument("--spread", type=float, default=1.5, help="JOD between a set's best and worst FLIP (flip)")
     ap.add_argument("--seed", type=int, default=20261201)
     ap.add_argument("--prefix", default="simulated", help="observer ids: PREFIX-01, PREFIX-02, ...")
     ap.add_argument("--width", type=int, default=1280)
