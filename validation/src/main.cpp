@@ -138,6 +138,7 @@ int main(int argc, char** argv) {
         pre.baselinePath = args.baseline;
         pre.reportDir = args.referencesOnly ? "" : args.out;
         pre.mergeDirs = args.merge;
+        pre.resultsMaxBytes = resultsFileByteLimit(matrix);
         unloadable = preflight(pre);
         if (!args.referencesOnly) staging.emplace(args.out);
     } catch (const std::exception& e) {
@@ -181,7 +182,8 @@ int main(int argc, char** argv) {
         in.slopes = fitSlopes(results.rows, matrix);
         if (!shard) in.outcomes = evaluateChecks(matrix, results.rows, in.cells, in.slopes);
         in.wallSeconds = args.merge.empty() ? wall : 0;
-        in.note = !args.merge.empty() ? "Merged from " + std::to_string(args.merge.size()) + " shard folders."
+        in.note = args.merge.size() == 1 ? "Written from the results of " + args.merge[0] + " (nothing rendered again)."
+                  : !args.merge.empty() ? "Merged from " + std::to_string(args.merge.size()) + " shard folders."
                   : shard ? "Shard " + std::to_string(args.shardIndex) + "/" + std::to_string(args.shardCount) +
                                 " only: checks are evaluated by --merge."
                           : "";
@@ -190,7 +192,7 @@ int main(int argc, char** argv) {
         for (const auto& line : identical) in.note += " ERROR: " + line + ".";
         BaselineComparison baseline;
         if (!args.baseline.empty()) {
-            Results base = readResultsJson(args.baseline);
+            Results base = readResultsJson(args.baseline, resultsFileByteLimit(matrix));
             sortRows(base.rows, matrix);
             baseline = compareToBaseline(in.cells, aggregate(base.rows), matrix.baselineTimeFactor);
             in.baseline = &baseline;

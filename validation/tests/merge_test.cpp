@@ -11,6 +11,7 @@
 #include <functional>
 #include <unistd.h>
 
+#include "metrics/image_metrics.h"
 #include "run/merge.h"
 #include "run/results.h"
 #include "run/shard_fingerprint.h"
@@ -37,6 +38,7 @@ struct Shards {
         matrix.seeds = {1, 2};
     }
     std::string contentHash = "0123456789abcdef", integrator = "path";
+    int side = 16; // the renders' width and height
     ~Shards() { fs::remove_all(dir); }
     // A shard folder holding the rows (pattern, seed) given.
     // `edit` changes each row after it is made as a measurement would make it.
@@ -50,7 +52,7 @@ struct Shards {
         r.rendererVersion = version;
         SceneInfo info;
         info.name = "box";
-        info.width = info.height = 16;
+        info.width = info.height = side;
         info.contentHash = contentHash;
         info.integrator = integrator;
         r.scenes = {info};
@@ -60,20 +62,21 @@ struct Shards {
             row.pattern = pattern;
             row.spp = 4;
             row.seed = seed;
-            row.width = row.height = 16;
+            row.width = row.height = side;
             row.rms = 0.5 + double(seed) / 8;
             row.mse = row.rms * row.rms;
             row.renderSeconds = 0.01;
-            // 16x16 is 2x2 blocks of 8x8 pixels: each block's squared error is a quarter of mse × 256 pixels.
-            row.blockSse.assign(4, row.mse * 64);
-            row.blockRse.assign(4, 0.25);
-            row.blockFlip.assign(4, 1.0);
+            // side² pixels in blocks of 8x8: each block's squared error is mse × 64 pixels.
+            const size_t blocks = size_t(blockCount(side, side));
+            row.blockSse.assign(blocks, row.mse * 64);
+            row.blockRse.assign(blocks, 0.25);
+            row.blockFlip.assign(blocks, 1.0);
             edit(row);
             r.rows.push_back(row);
         }
         SceneFingerprint box;
         box.loaded = true;
-        box.width = box.height = 16;
+        box.width = box.height = side;
         r.fingerprint = runFingerprint(matrix, {box}, version, "shim 1");
         writeResultsJson((d / "results.json").string(), r, {}, {}, Json::array());
         return d.string();
@@ -180,4 +183,49 @@ BOOST_AUTO_TEST_CASE(shards_of_other_content_or_contradicting_blocks_are_refused
                           [&](const auto& e) { return mentions(e, "block_flip value"); });
     const std::string good = s.shard("e", {{"independent", 2}, {"stratified", 2}});
     BOOST_CHECK_EQUAL(mergeShards(s.matrix, {a, good}, s.out()).rows.size(), 4u);
+}
+
+// The read limit is the matrix's: a run's own results.json (its rows' per-block lists at the matrix's image size)
+// is read back however large, and a file beyond what the matrix's run writes is refused by name before parsing.
+BOOST_AUTO_TEST_CASE(read_limit_comes_from_the_matrix) {
+    Shards s;
+    s.side = 2048; // 65536 blocks a row: the four rows' lists pass the fixed 16 MiB of other input files
+    s.matrix.scenes[0].width = s.matrix.scenes[0].height = s.side;
+    const auto longValues = [](ResultRow& r) {
+        // Values with all their digits, as measurements have.
+        for (double& v : r.blockRse) v = 1.0 / 3;
+        for (double& v : r.blockFlip) v = 2.0 / 3;
+    };
+    const std::string a = s.shard("a", {{"independent", 1}, {"independent", 2}}, "stipple-render 1", longValues);
+    const std::string b = s.shard("b", {{"stratified", 1}, {"stratified", 2}}, "stipple-render 1", longValues);
+    const uint64_t limit = resultsFileByteLimit(s.matrix);
+    const uint64_t bytes = fs::file_size(fs::path(a) / "results.json") + fs::file_size(fs::path(b) / "results.json");
+    BOOST_TEST_MESSAGE("two shards' results.json: " << bytes << " bytes; the matrix's limit " << limit);
+    BOOST_TEST(bytes > stipple::render::limits::kMaxYamlFileBytes);
+    // The rows' share of the limit bounds what the run wrote (the fixed part is for cells, slopes and checks).
+    BOOST_TEST(bytes <= limit - stipple::render::limits::kMaxYamlFileBytes);
+    BOOST_TEST(mergeShards(s.matrix, {a, b}, s.out()).rows.size() == 4u);
+
+    // One byte over: refused before it is read, naming the file and the limit.
+    const fs::path big = fs::path(b) / "results.json";
+    fs::resize_file(big, limit + 1); // sparse: costs no disk
+    BOOST_CHECK_EXCEPTION(mergeShards(s.matrix, {a, b}, s.out()), std::runtime_error, [&](const auto& e) {
+        return mentions(e, big.string()) && mentions(e, "the limit is " + std::to_string(limit));
+    });
+    BOOST_CHECK_EXCEPTION(readResultsJson(big.string(), limit), std::runtime_error,
+                          [&](const auto& e) { return mentions(e, big.string()) && mentions(e, "limit"); });
+}
+
+// Whatever the matrix, the limit is bounded: a scene of unknown size counts at the largest render, and the whole at
+// kMaxResultsFileBytes.
+BOOST_AUTO_TEST_CASE(read_limit_is_bounded) {
+    Shards s;
+    const uint64_t unknownSize = resultsFileByteLimit(s.matrix); // the scene's width and height are not given
+    s.matrix.scenes[0].width = s.matrix.scenes[0].height = 16;
+    const uint64_t small = resultsFileByteLimit(s.matrix);
+    BOOST_TEST(small > stipple::render::limits::kMaxYamlFileBytes);
+    BOOST_TEST(small < unknownSize);
+    BOOST_TEST(unknownSize <= kMaxResultsFileBytes);
+    s.matrix.seeds.resize(100000, 7);
+    BOOST_TEST(resultsFileByteLimit(s.matrix) == kMaxResultsFileBytes);
 }

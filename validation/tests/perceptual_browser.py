@@ -25,7 +25,6 @@ All randomness is seeded; every assertion names what failed. Exit status 0 only 
 """
 import hashlib
 import json
-import math
 import os
 import random
 import shutil
@@ -35,12 +34,13 @@ import time
 import urllib.error
 import urllib.request
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
-from selenium.webdriver.common.keys import Keys
 
-SIGMA = 1.0 / 0.6744897501960817  # 1 JOD = 75% preference (Thurstone Case V, as the analysis)
+# The observer driver is the one researchers run (validation/perceptual/simulated_observers.py).
+sys.dont_write_bytecode = True  # nothing written into the source tree
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "perceptual"))
+from simulated_observers import browser, latent_chooser, run_session, start_server, stop_server  # noqa: E402
+
 failures = []
 
 
@@ -48,95 +48,6 @@ def check(ok, what):
     print(("ok   " if ok else "FAIL ") + what, flush=True)
     if not ok:
         failures.append(what)
-
-
-def browser(width, height, download_dir=None):
-    options = webdriver.ChromeOptions()
-    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                f"--window-size={width},{height}", "--force-device-scale-factor=1"):
-        options.add_argument(arg)
-    if download_dir:
-        options.add_experimental_option("prefs", {"download.default_directory": download_dir,
-                                                  "download.prompt_for_download": False})
-    return webdriver.Chrome(service=Service(shutil.which("chromedriver") or "/usr/bin/chromedriver"),
-                            options=options)
-
-
-def run_session(driver, url, observer, choose, use_keys):
-    """One observer's session. choose(trial_kind_hint, crop_ids) -> ranking (best first) or None (no difference)."""
-    driver.get(url)
-    box = driver.find_element(By.ID, "observer")
-    box.clear()
-    box.send_keys(observer)
-    driver.find_element(By.ID, "start").click()
-    while driver.find_element(By.ID, "trial").is_displayed():
-        crops = driver.find_elements(By.CSS_SELECTOR, "#crops .crop")
-        ids = [c.get_attribute("data-crop") for c in crops]
-        ranking = choose(ids)
-        if ranking is None:
-            if use_keys:
-                driver.find_element(By.TAG_NAME, "body").send_keys("0")
-            else:
-                driver.find_element(By.ID, "nodiff").click()
-        else:
-            for cid in ranking[:-1]:  # the last is filled in by the page
-                i = ids.index(cid)
-                if use_keys:
-                    driver.find_element(By.TAG_NAME, "body").send_keys(str(i + 1))
-                else:
-                    crops[i].click()
-        if use_keys:
-            driver.find_element(By.TAG_NAME, "body").send_keys(Keys.ENTER)
-        else:
-            driver.find_element(By.ID, "next").click()
-    body = driver.find_element(By.TAG_NAME, "body")
-    for _ in range(100):
-        if body.get_attribute("data-submitted") or url.startswith("file:"):
-            break
-        time.sleep(0.05)
-    return body.get_attribute("data-submitted")
-
-
-def latent_chooser(key, latent, rng, careless=False):
-    """Rank by latent quality + Thurstone noise; the control (fewer samples) is seen as clearly worst."""
-    pattern_of, control_ids = {}, set()
-    for s in key["sets"]:
-        for c in s["crops"]:
-            pattern_of[c["id"]] = (s["name"], c["pattern"])
-        control_ids.add(s["control"]["id"])
-
-    def choose(ids):
-        if careless:
-            return rng.sample(ids, len(ids))
-        noisy = {}
-        for cid in ids:
-            if cid in control_ids:
-                noisy[cid] = -100.0
-            else:
-                name, pattern = pattern_of[cid]
-                noisy[cid] = latent[name][pattern] + rng.gauss(0, SIGMA / math.sqrt(2))
-        return sorted(ids, key=lambda c: -noisy[c])
-    return choose
-
-
-def start_server(tool, folder):
-    p = subprocess.Popen([tool, "--serve-study", folder, "--port", "0"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True)
-    line = p.stdout.readline()
-    if "http://127.0.0.1:" not in line:
-        p.kill()
-        raise SystemExit("server did not start: " + line + p.stderr.read())
-    url = line.split(" at ")[1].split()[0]
-    return p, url
-
-
-def stop_server(p):
-    p.terminate()
-    try:
-        p.wait(5)
-    except subprocess.TimeoutExpired:
-        p.kill()
 
 
 def analyse(tool, folder, *extra):

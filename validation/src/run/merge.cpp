@@ -155,7 +155,7 @@ Results mergeShards(const Matrix& m, const std::vector<std::string>& dirs, const
     merged.matrixName = m.name;
     std::set<std::tuple<std::string, std::string, uint32_t, uint64_t>> seen;
     for (const auto& dir : dirs) {
-        Results r = readResultsJson((fs::path(dir) / "results.json").string());
+        Results r = readResultsJson((fs::path(dir) / "results.json").string(), resultsFileByteLimit(m));
         if (merged.fingerprint.empty()) merged.fingerprint = r.fingerprint;
         if (merged.rendererVersion.empty())
             merged.rendererVersion = r.rendererVersion;

@@ -20,7 +20,7 @@ std::map<std::string, std::string> preflight(const PreflightInputs& in) {
     if (!in.baselinePath.empty()) {
         Results base;
         try {
-            base = readResultsJson(in.baselinePath);
+            base = readResultsJson(in.baselinePath, in.resultsMaxBytes);
         } catch (const std::exception& e) {
             throw PreflightError(std::string("--baseline: ") + e.what());
         }

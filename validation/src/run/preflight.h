@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <stipple/render/input_limits.h>
+
 #include "matrix/matrix.h"
 
 namespace stipple::validation {
@@ -27,6 +29,7 @@ struct PreflightInputs {
     std::string baselinePath; // empty: none
     std::string reportDir;    // empty: no report (references only)
     std::vector<std::string> mergeDirs; // --merge's shard folders: the report folder must be none of them
+    uint64_t resultsMaxBytes = render::limits::kMaxYamlFileBytes; // the baseline's read limit (resultsFileByteLimit of the matrix)
 };
 
 // Throws PreflightError for the baseline and the cache; returns scene name -> load error for the scenes that

@@ -3,6 +3,8 @@
 
 #include "run/results.h"
 #include "base/fields.h"
+#include "metrics/image_metrics.h"
+#include "metrics/regions.h"
 
 #include <stipple/render/input_limits.h>
 
@@ -303,10 +305,38 @@ void writeResultsJson(const std::string& path, const Results& results, const std
     writeTextFile(path, root.dump(2) + "\n");
 }
 
-Results readResultsJson(const std::string& path) {
+uint64_t resultsFileByteLimit(const Matrix& m) {
+    // As writeResultsJson lays a row out (dump(2)): a list value is a line of 8 spaces, at most 24 characters of a
+    // double and ",\n" (34 bytes; 48 allowed); the row's ~30 scalars and two names fit in 8 KiB; a region adds six
+    // values outside the block lists. Each row holds three lists (SSE, relative SE, FLIP) of its image's and its
+    // regions' blocks.
+    constexpr double kBytesPerValue = 48, kBytesPerRow = 8192, kBytesPerRegion = 6 * kBytesPerValue;
+    // A render's most blocks: ceil(w/8) ceil(h/8) <= w h / 64 + (w + h) / 8 + 1 with w h <= kMaxPixels.
+    constexpr double kMaxBlocks = double(render::limits::kMaxPixels) / (kErrorBlockSize * kErrorBlockSize) +
+                                  2.0 * render::limits::kMaxImageSide / kErrorBlockSize + 1;
+    // Scenes, cells, slopes, checks and the fingerprint: within the limit every other input file has.
+    double bytes = double(render::limits::kMaxYamlFileBytes);
+    const double rowsPerScene = double(m.patterns.size()) * double(m.spp.size()) * double(m.seeds.size());
+    for (const MatrixScene& s : m.scenes) {
+        double blocks = 0;
+        if (s.width > 0 && s.height > 0) {
+            blocks = blockCount(s.width, s.height);
+            for (const Region& r : s.regions) {
+                const PixelRect px = pixelRect(r, s.width, s.height);
+                blocks += blockCount(px.w, px.h);
+            }
+        } else {
+            blocks = double(1 + s.regions.size()) * kMaxBlocks; // the scene's own size, not known before loading it
+        }
+        bytes += rowsPerScene * (kBytesPerRow + double(s.regions.size()) * kBytesPerRegion + 3 * blocks * kBytesPerValue);
+    }
+    return uint64_t(std::min(bytes, double(kMaxResultsFileBytes)));
+}
+
+Results readResultsJson(const std::string& path, uint64_t maxBytes) {
     std::string text;
     try {
-        text = render::readFileBounded(path, render::limits::kMaxYamlFileBytes, "results file");
+        text = render::readFileBounded(path, maxBytes, "results file");
     } catch (const render::InputLimitError& e) {
         throw std::runtime_error(e.what());
     }
@@ -332,7 +362,7 @@ Results readResultsJson(const std::string& path) {
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(path + ": malformed results.json: " + e.what());
     }
-    r.fingerprint = readFingerprint(path);
+    r.fingerprint = parseFingerprint(text, path);
     r.scenes = fromJsonArray(root, "scenes", sceneInfoFields(), path);
     r.skipped = fromJsonArray(root, "skipped_scenes", skippedSceneFields(), path);
     r.rows = fromJsonArray(root, "rows", resultRowFields(), path);

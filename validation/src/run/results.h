@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <stipple/render/input_limits.h>
+
 #include "base/fields.h"
 #include "matrix/matrix.h"
 #include "run/shard_fingerprint.h"
@@ -112,9 +114,17 @@ void writeCellsCsv(const std::string& path, const std::vector<CellAggregate>& ce
 // Writes everything: rows, scenes, aggregates, slopes; `checks` (a JSON array) goes under "checks".
 void writeResultsJson(const std::string& path, const Results& results, const std::vector<CellAggregate>& cells,
                       const std::vector<SlopeFit>& slopes, const Json& checks);
-// Reads the rows and scenes back (files of format "stipple-validate results 1"). Throws std::runtime_error
-// naming the file (and line:column, or the record and field) on bad input.
-Results readResultsJson(const std::string& path);
+// The largest results.json a run of `matrix` writes, which is what --merge and --baseline read back of one: its
+// rows (scenes × patterns × spp × seeds) with their per-block lists (blocks of the image and its regions at the
+// matrix's size, else at the largest image a render may have) and a fixed allowance for the rest; at most
+// kMaxResultsFileBytes. A file beyond it is not this matrix's and is refused before it is parsed.
+inline constexpr uint64_t kMaxResultsFileBytes = 1ull << 30;
+uint64_t resultsFileByteLimit(const Matrix& matrix);
+
+// Reads the rows and scenes back (files of format "stipple-validate results 1"), refusing a file over `maxBytes`
+// (resultsFileByteLimit of the matrix it is read for; the default is the limit of any other YAML or JSON input).
+// Throws std::runtime_error naming the file (and line:column, or the record and field, or the limit) on bad input.
+Results readResultsJson(const std::string& path, uint64_t maxBytes = render::limits::kMaxYamlFileBytes);
 
 // Writes `text` to `path` through a temporary file (render::TempPath) renamed into place.
 void writeTextFile(const std::string& path, const std::string& text);

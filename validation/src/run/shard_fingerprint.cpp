@@ -3,6 +3,9 @@
 
 #include "run/shard_fingerprint.h"
 #include "matrix/check_kind.h"
+#include "run/results.h" // resultsFileByteLimit
+
+#include <stipple/render/input_limits.h>
 
 #include <filesystem>
 #include <fstream>
@@ -90,12 +93,18 @@ std::string fingerprintJson(const Fingerprint& fp, const std::string& indent) {
     return out + "\n" + indent + "}";
 }
 
-Fingerprint readFingerprint(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot open results file");
+Fingerprint readFingerprint(const std::string& path, uint64_t maxBytes) {
+    try {
+        return parseFingerprint(render::readFileBounded(path, maxBytes, "results file"), path);
+    } catch (const render::InputLimitError& e) {
+        throw std::runtime_error(e.what());
+    }
+}
+
+Fingerprint parseFingerprint(const std::string& text, const std::string& path) {
     ordered_json root;
     try {
-        root = ordered_json::parse(in);
+        root = ordered_json::parse(text);
     } catch (const ordered_json::parse_error& e) {
         throw std::runtime_error(path + ": malformed results.json: " + e.what());
     }
@@ -120,7 +129,7 @@ void checkShardFingerprints(const Matrix& matrix, const std::vector<std::string>
     std::vector<Fingerprint> prints;
     for (const auto& dir : dirs) {
         const std::string path = (fs::path(dir) / "results.json").string();
-        prints.push_back(readFingerprint(path));
+        prints.push_back(readFingerprint(path, resultsFileByteLimit(matrix)));
         if (prints.back().empty())
             throw std::runtime_error(
                 "merge: " + path + " has no fingerprint (written by an older stipple-validate): run that shard again");

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <stipple/render/input_limits.h>
+
 #include "matrix/matrix.h"
 
 namespace stipple::validation {
@@ -49,9 +51,11 @@ Fingerprint runFingerprint(const Matrix& matrix, const std::vector<SceneFingerpr
 
 // The "fingerprint" member of results.json: a JSON object, one member per field, in order.
 std::string fingerprintJson(const Fingerprint& fingerprint, const std::string& indent = "  ");
-// Reads the "fingerprint" object of a results.json; empty when the file has none (older versions).
-// Throws std::runtime_error naming the file when it cannot be read or parsed.
-Fingerprint readFingerprint(const std::string& resultsJsonPath);
+// Reads the "fingerprint" object of a results.json of at most `maxBytes` bytes; empty when the file has none (older
+// versions). Throws std::runtime_error naming the file when it cannot be read or parsed, or is over the limit.
+Fingerprint readFingerprint(const std::string& resultsJsonPath, uint64_t maxBytes = render::limits::kMaxYamlFileBytes);
+// The same of a results.json's text already read from `path`.
+Fingerprint parseFingerprint(const std::string& text, const std::string& path);
 
 struct FingerprintDifference {
     std::string field, a, b; // a missing field reads "(absent)"
