@@ -39,7 +39,7 @@ constexpr uint32_t kBlue = STIPPLE_SAMPLER_FLAG_BLUE_NOISE;
 BOOST_AUTO_TEST_CASE(a_tile_of_pixels_stratifies_every_stratum) {
     // stratified N = 16 (1D: 16 strata, 2D: 4 x 4): in a tile, stratum s's points of the 4096 pixels take its 4096
     // sub-cells (2D: 64 x 64, 1D: 4096) once each, whichever map of the 2D family the tile has.
-    for (uint32_t pattern : kBlueNoisePatterns)
+    for (uint32_t pattern : blueNoisePatterns())
         for (uint32_t arity : {1u, 2u}) {
             const uint32_t n = 16;
             const uint32_t strataPerAxis = arity == 1 ? 16 : 4;
