@@ -12,11 +12,13 @@ for it in TABLES below; a document links to the file instead of copying numbers.
   that made it and the SHA-256 of its inputs; --check recomputes that hash and fails when it differs (or when
   TABLES lists another command for it): the table no longer describes the code. What the inputs are depends on
   what the numbers are a function of:
-  - sample-quality tables (battery, spectra, blue-noise gain, prefixes) are a function of the values the library
-    serves and of the generator: their inputs are the generator's sources and the line `shim_output_digest`
-    prints, a hash of every value every pattern serves (all calls, flags, arities, several N, pixels and blocks).
-    A change that moves no served bit (a refactor, a faster kernel) leaves them true; one that moves any bit
-    stales them, even where the table would not visibly change, since the check cannot run the measurement.
+  - sample-quality tables (battery, spectra, blue-noise gain, prefixes, ...) are a function of the values the
+    library serves and of the generator: their inputs are the generator's sources and the line `shim_output_digest`
+    prints, a hash of every value the patterns the table measures serve (all calls, arities, several N, pixels and
+    blocks): every pattern with every flag, every pattern without flags (`--plain`), or the patterns it names
+    (`--select`). A change that moves no such bit (a refactor, a faster kernel, another pattern) leaves them true;
+    one that moves any stales them, even where the table would not visibly change, since the check cannot run
+    the measurement.
   - timing tables (cost, blue-noise cost, cursor) are a function of the code itself: their inputs are the
     generator's sources and every source of the library, so any change to the library stales them.
 
@@ -56,7 +58,9 @@ class Table:
         self.name, self.path, self.inputs, self.command, self.derive, self.fence = (name, path, inputs, command,
                                                                                    derive, fence)
         self.start = start  # what {out} holds before the command runs
-        self.served = served  # a function of the served values: keyed by shim_output_digest, not the sources
+        # a function of the served values, keyed by shim_output_digest: True (every pattern and flag), "--plain",
+        # or "--select a,b+blue-noise" (what the table measures)
+        self.served = served
 
     @property
     def kind(self):
@@ -122,29 +126,33 @@ def derive_sources():
 TABLES = [
     Table("validate-options", "validation/docs/options.md", ["validation/src/**"], derive=derive_options),
     Table("validate-sources", "validation/docs/sources.md", ["validation/src/**"], derive=derive_sources),
-    Table("spectra", "shim/POINTSETS-spectra.md", ["shim/bench/spectrum.cpp"], served=True,
+    Table("spectra", "shim/POINTSETS-spectra.md", ["shim/bench/spectrum.cpp"],
+          served="--select poisson,poisson-seed,independent",
           command="{bin}/shim_spectrum > {out}"),
     Table("battery", "shim/docs/tables/battery.md",
           ["shim/bench/battery.cpp", "shim/bench/battery_integrands.h"], served=True,
           start="<!-- battery:begin -->\n<!-- battery:end -->\n",  # shim_battery --pointsets fills between
           command="{bin}/shim_battery -o {tmp} --sets 400 --threads 2 --pointsets {out}"),
     Table("blue-noise-gain", "shim/docs/tables/blue-noise-gain.md",
-          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_integrands.h"], served=True,
+          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_integrands.h"],
+          served="--select stratified,stratified+blue-noise,independent,independent+blue-noise",
           command="{bin}/shim_blue_noise_gain -o {tmp} --images 24 --patterns independent,stratified "
                   "&& cp {tmp}/blue_noise_gain.md {out}"),
     Table("grown", "shim/docs/tables/grown.md",
-          ["shim/bench/battery.cpp", "shim/bench/battery_integrands.h", "shim/bench/battery_grown.h"], served=True,
+          ["shim/bench/battery.cpp", "shim/bench/battery_integrands.h", "shim/bench/battery_grown.h"], served="--plain",
           command="{bin}/shim_battery -o {tmp} --sections grown --no-blue --sets 400 --boot 200 --threads 2 "
                   "--grown-file {out}"),
     Table("blue-noise-grown", "shim/docs/tables/blue-noise-grown.md",
-          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_grown.h"], served=True,
+          ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_grown.h"],
+          served="--select stratified,stratified+blue-noise,independent,independent+blue-noise",
           command="{bin}/shim_blue_noise_gain -o {tmp} --grown --patterns stratified,independent --images 8 "
                   "--size 128 && cp {tmp}/blue_noise_grown.md {out}"),
     Table("spectra-dart", "shim/docs/tables/spectra-dart.md", ["shim/bench/spectrum.cpp", "shim/bench/dart_reference.h"],
-          served=True,
+          served="--select poisson,poisson-seed,independent",
           command="{bin}/shim_spectrum --dart --patterns poisson,poisson-seed,independent --arities 2,3 "
                   "--ns 16,64,256,1024 > {out}"),
-    Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"], served=True,
+    Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"],
+          served="--select independent,stratified,poisson",
           command="{bin}/shim_progressive_prefixes > {out}"),
     Table("cost", "shim/docs/tables/cost.md", ["shim/bench/shim_bench.cpp", "shim/bench/ratios.py"] + LIBRARY,
           command="{bin}/shim_shim_bench --benchmark_filter='BM_(FillPixel|Sample|Stream|StreamFill)/pattern:[0124567]/' "
@@ -172,13 +180,14 @@ DIGEST = None  # --digest: the shim_output_digest program (default: the build tr
 
 
 @functools.lru_cache(maxsize=None)
-def served_digest():
-    """The line shim_output_digest prints: a hash of every value the library serves."""
+def served_digest(selection=True):
+    """The line shim_output_digest prints: a hash of every value the selected patterns serve."""
     program = DIGEST or BUILD_TREE / "bin/shim_output_digest"
     if not program.exists():
         raise SystemExit(f"doc_tables: {program} is missing: build the target shim_output_digest (or pass "
                          "--build-tree)")
-    run = subprocess.run([str(program)], capture_output=True, text=True)
+    args = [] if selection is True else selection.split(" ", 1)
+    run = subprocess.run([str(program)] + args, capture_output=True, text=True)
     if run.returncode != 0 or not run.stdout.startswith("stipple output digest "):
         raise SystemExit(f"doc_tables: {program} failed: {run.stderr.strip()}")
     return run.stdout.strip()
@@ -194,7 +203,7 @@ def inputs_hash(table):
     for f in sorted(files):
         h.update(f.encode() + b"\0" + (ROOT / f).read_bytes() + b"\0")
     if table.served:
-        h.update(served_digest().encode())
+        h.update(served_digest(table.served).encode())
     return h.hexdigest()
 
 

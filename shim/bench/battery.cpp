@@ -553,7 +553,8 @@ std::string runPrefix(const Options& opt, const std::vector<Variant>& variants) 
 // from per-point powers of exp(2 pi i x) and exp(2 pi i y).
 std::vector<std::vector<double>> grownErrors(const Variant& v, uint32_t n, const std::vector<GrownIntegrand>& battery,
                                              int R) {
-    stipple_sampler s = makeSampler(v, n, {2}, kSeed ^ 0x6e0ull);
+    const stipple::Sampler sampler = makeSampler(v, n, {2}, kSeed ^ 0x6e0ull);
+    const stipple_sampler s = sampler.handle();
     std::vector<std::vector<double>> err(battery.size(), std::vector<double>(size_t(R)));
     int radius = 0;
     for (const GrownIntegrand& g : battery) radius = std::max({radius, std::abs(g.k[0]), std::abs(g.k[1])});
@@ -586,7 +587,6 @@ std::vector<std::vector<double>> grownErrors(const Variant& v, uint32_t n, const
             err[g][size_t(r)] = e * e / in.variance[0];
         }
     }
-    stipple_sampler_release(s);
     return err;
 }
 

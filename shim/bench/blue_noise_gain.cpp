@@ -228,6 +228,12 @@ std::string fmt(double v) {
 
 std::string cell(const Interval& i) { return fmt(i.value) + " [" + fmt(i.lo) + ", " + fmt(i.hi) + "]"; }
 
+std::string patternName(uint32_t id) {
+    const char* name = nullptr;
+    if (stipple_pattern_name(id, &name) != STIPPLE_OK) fail("stipple_pattern_name");
+    return name;
+}
+
 // Renders images x {plain, flag} of one pattern and N with `render`, in parallel.
 template <class Render>
 void renderPairs(uint32_t id, uint32_t n, int images, int threads, std::vector<ImageStats> (&stats)[2], Render render) {
@@ -240,11 +246,9 @@ void renderPairs(uint32_t id, uint32_t n, int images, int threads, std::vector<I
             for (int job; (job = next.fetch_add(1)) < 2 * images;) {
                 const bool blue = job % 2 == 1;
                 const int image = job / 2;
-                std::string why;
-                stipple_sampler s = makeSampler(id, n, kSeed + uint64_t(image), blue, &why);
-                if (!s) fail("stipple_sampler_create: " + why);
-                stats[blue][size_t(image)] = render(s);
-                stipple_sampler_release(s);
+                const stipple::Sampler s = makeSampler(patternName(id), n, kSeed + uint64_t(image), blue);
+                if (!s) fail("stipple_sampler_create: " + s.status().message());
+                stats[blue][size_t(image)] = render(s.handle());
             }
         });
     for (auto& th : pool) th.join();
@@ -274,10 +278,8 @@ int runGrown(const fs::path& outDir, const std::vector<std::string>& patterns, c
         uint32_t id = 0;
         if (stipple_pattern_from_name(name.c_str(), &id) != STIPPLE_OK) fail("unknown pattern \"" + name + "\"");
         md << "## " << name << "\n\n";
-        std::string refusal;
-        if (stipple_sampler s = makeSampler(id, ns[0], kSeed, true, &refusal))
-            stipple_sampler_release(s);
-        else {
+        if (const stipple::Sampler probe = makeSampler(name, ns[0], kSeed, true); !probe) {
+            const std::string refusal = probe.status().message();
             md << "Refused by the library: " << refusal << "\n\n";
             std::cerr << name << ": refused (" << refusal << ")\n";
             continue;

@@ -4,15 +4,22 @@
 // the bits of every pattern's batch, stream and array calls (with and without the flags each pattern accepts) over
 // arities 1-3, power-of-two and other N, several pixels (negative ones too), blocks past N, and of every pattern's
 // limits. ci/doc_tables.py keys the documentation's sample-quality tables by it: a change that moves no served bit
-// (a refactor, a faster kernel) leaves those tables true, one that moves any bit makes them stale.
+// (a refactor, a faster kernel) leaves those tables true, one that moves any bit makes them stale. A table that
+// measures a few patterns is keyed by those alone (--select), so a change to another pattern leaves it true.
 //   stipple-link: shared
-//   usage: shim_output_digest        (prints "stipple output digest <16 hex digits>")
+//   usage: shim_output_digest [--plain | --select NAME[+blue-noise],...]
+//          prints "stipple output digest <16 hex digits>": every pattern with every flag it accepts, every pattern
+//          without flags (--plain), or only the listed patterns with exactly the listed flags (as the tools spell
+//          them; a flag the pattern refuses is hashed as its refusal)
 #include <stipple/stipple.h>
 
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -35,21 +42,60 @@ void check(stipple_status s, const char* what) {
     if (s != STIPPLE_OK) fail(what);
 }
 
+// (pattern, flags) pairs to hash: every pattern with each flag set its limits accept, or those --select names.
+std::vector<std::pair<uint32_t, uint32_t>> selection(int argc, char** argv) {
+    std::vector<std::pair<uint32_t, uint32_t>> out;
+    const bool plain = argc == 2 && std::strcmp(argv[1], "--plain") == 0;
+    if (argc == 1 || plain) {
+        uint32_t patterns = 0;
+        check(stipple_pattern_count(&patterns), "stipple_pattern_count");
+        for (uint32_t pattern = 0; pattern < patterns; ++pattern) {
+            stipple_pattern_limits limits{};
+            limits.struct_size = sizeof limits;
+            check(stipple_pattern_get_limits(pattern, &limits), "stipple_pattern_get_limits");
+            for (uint32_t flags : {0u, uint32_t(STIPPLE_SAMPLER_FLAG_BLUE_NOISE)})
+                if ((flags & limits.flags) == flags && !(plain && flags)) out.emplace_back(pattern, flags);
+        }
+        return out;
+    }
+    if (argc != 3 || std::strcmp(argv[1], "--select") != 0) {
+        std::fprintf(stderr, "usage: shim_output_digest [--plain | --select NAME[+blue-noise],...]\n");
+        std::exit(2);
+    }
+    std::stringstream list(argv[2]);
+    for (std::string name; std::getline(list, name, ',');) {
+        uint32_t pattern = 0, flags = 0;
+        if (stipple_pattern_parse(name.c_str(), &pattern, &flags) != STIPPLE_OK) fail(("--select " + name).c_str());
+        out.emplace_back(pattern, flags);
+    }
+    if (out.empty()) fail("--select names no pattern");
+    return out;
+}
+
 } // namespace
 
-int main() {
+int main(int argc, char** argv) {
     Fnv fnv;
-    uint32_t patterns = 0;
-    check(stipple_pattern_count(&patterns), "stipple_pattern_count");
     const uint32_t ns[] = {1, 7, 16, 100, 256};
     const int32_t pixels[][2] = {{0, 0}, {5, -3}, {1000, 7}, {63, 64}};
-    for (uint32_t pattern = 0; pattern < patterns; ++pattern) {
+    uint32_t lastPattern = ~0u;
+    for (const auto& [pattern, flags] : selection(argc, argv)) {
         stipple_pattern_limits limits{};
         limits.struct_size = sizeof limits;
         check(stipple_pattern_get_limits(pattern, &limits), "stipple_pattern_get_limits");
-        fnv.bytes(&limits, sizeof limits);
-        for (uint32_t flags : {0u, uint32_t(STIPPLE_SAMPLER_FLAG_BLUE_NOISE)}) {
-            if ((flags & limits.flags) != flags) continue;
+        if (pattern != lastPattern) { // once per pattern
+            // A selection is keyed by what its pairs serve: whether a flag is accepted shows below, as values or
+            // as a refusal, so the flags a pattern accepts count only in the whole digest.
+            stipple_pattern_limits keyed = limits;
+            if (argc > 1) keyed.flags = 0;
+            fnv.bytes(&keyed, sizeof keyed);
+        }
+        lastPattern = pattern;
+        if ((flags & limits.flags) != flags) { // a refused flag: the refusal is what the table shows
+            fnv.word(0xfeedull ^ pattern);
+            continue;
+        }
+        {
             for (uint32_t n : ns) {
                 stipple_dimension_desc dims[3]{};
                 for (uint32_t a = 0; a < 3; ++a) {
