@@ -114,6 +114,18 @@ struct ImageStats {
     std::vector<double> mse, band; // per integrand, normalised by Var f
 };
 
+// Per integrand, the per-pixel MSE and the low-band energy of an error image (error[integrand][pixel]).
+ImageStats imageStats(const std::vector<std::vector<double>>& error, int size) {
+    ImageStats st;
+    for (const std::vector<double>& image : error) {
+        double sq = 0;
+        for (double e : image) sq += e * e;
+        st.mse.push_back(sq / image.size());
+        st.band.push_back(lowBandEnergy(image, size));
+    }
+    return st;
+}
+
 ImageStats renderImage(stipple_sampler s, uint32_t n, int size, const std::vector<Integrand>& battery) {
     std::vector<std::vector<double>> error(battery.size(), std::vector<double>(size_t(size) * size));
     std::vector<float> points(size_t(n) * 2);
@@ -127,14 +139,7 @@ ImageStats renderImage(stipple_sampler s, uint32_t n, int size, const std::vecto
                 error[g][size_t(y) * size + x] = (sum / n - battery[g].exact[0]) / std::sqrt(battery[g].variance[0]);
             }
         }
-    ImageStats st;
-    for (size_t g = 0; g < battery.size(); ++g) {
-        double sq = 0;
-        for (double e : error[g]) sq += e * e;
-        st.mse.push_back(sq / error[g].size());
-        st.band.push_back(lowBandEnergy(error[g], size));
-    }
-    return st;
+    return imageStats(error, size);
 }
 
 // The grown battery's per-pixel errors: gratings all at once, sum_p cos(2 pi (kx x_p + ky y_p)) from per-point
@@ -179,14 +184,7 @@ ImageStats renderGrownImage(stipple_sampler s, uint32_t n, int size, const std::
                 error[g][size_t(y) * size + x] = (sum / n - in.exact[0]) / std::sqrt(in.variance[0]);
             }
         }
-    ImageStats st;
-    for (size_t g = 0; g < battery.size(); ++g) {
-        double sq = 0;
-        for (double e : error[g]) sq += e * e;
-        st.mse.push_back(sq / error[g].size());
-        st.band.push_back(lowBandEnergy(error[g], size));
-    }
-    return st;
+    return imageStats(error, size);
 }
 
 struct Interval {

@@ -93,6 +93,15 @@ bool onePointPerCell(std::vector<float> x) {
     return hi - lo < 1.0;
 }
 
+// The averaged spectrum's measures into m (the point sets' own measures are the caller's).
+void takeSpectrum(Measures& m, const PowerSpectrum& spectrum) {
+    m.peak = spectrum.largestPeak();
+    m.peakRadius = spectrum.largestPeakRadius();
+    m.raps = spectrum.rapsPeak();
+    m.anisotropy = spectrum.medianAnisotropy();
+    m.annuli = spectrum.annuli();
+}
+
 // 1D annuli n / 32 frequencies wide (at least 1): the radial spectrum of 1D sets is otherwise one noisy value per |k|.
 int annulusWidth(uint32_t arity, uint32_t n) { return arity == 1 ? int(std::max(1u, n / 32)) : 1; }
 
@@ -113,11 +122,7 @@ Measures measure(uint32_t pattern, uint32_t arity, uint32_t n, uint32_t pixels) 
         m.rhoMean += rho / pixels;
         if (arity == 1) m.cellPixels += onePointPerCell(values);
     }
-    m.peak = spectrum.largestPeak();
-    m.peakRadius = spectrum.largestPeakRadius();
-    m.raps = spectrum.rapsPeak();
-    m.anisotropy = spectrum.medianAnisotropy();
-    m.annuli = spectrum.annuli();
+    takeSpectrum(m, spectrum);
     return m;
 }
 
@@ -136,11 +141,7 @@ Measures measureDart(double rho, uint32_t arity, uint32_t n, uint32_t pixels) {
         m.rhoMin = std::min(m.rhoMin, rhoSet);
         m.rhoMean += rhoSet / pixels;
     }
-    m.peak = spectrum.largestPeak();
-    m.peakRadius = spectrum.largestPeakRadius();
-    m.raps = spectrum.rapsPeak();
-    m.anisotropy = spectrum.medianAnisotropy();
-    m.annuli = spectrum.annuli();
+    takeSpectrum(m, spectrum);
     return m;
 }
 
