@@ -75,7 +75,7 @@ def main(argv):
                     same = compared.returncode == 0
                     total += 1
                     differing += not same
-                    print(f"{scene:<14}{integrator:<14}{pattern:<12}{'identical' if same else 'DIFFERENT'}", flush=True)
+                    print(f"{scene:<14}{integrator:<14}{pattern:<24} {'identical' if same else 'DIFFERENT'}", flush=True)
     print(f"{total - differing} of {total} images identical")
     return 1 if differing else 0
 

@@ -18,7 +18,7 @@
 #include "pmj02_family.h"
 #include "pmj02_generator.h"
 #include "pointsets/cell_grid.h"
-#include "pointsets/orthant_tree.h"
+#include "pointsets/dart_grid.h"
 #include "pointsets/pointsets.h"
 #include "pointsets/random.h"
 #include "pointsets/spectrum.h"

@@ -6,10 +6,13 @@
 #define BOOST_TEST_MODULE pointsets_basic
 #include <boost/test/unit_test.hpp>
 
+#include "pointsets/dart_grid.h"
 #include "pointsets/pointsets.h"
+#include "pointsets/random.h"
 #include "pointsets/torus.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -152,5 +155,54 @@ BOOST_AUTO_TEST_CASE(relative_radius_matches_brute_force) {
                 clustered.push_back(0.01f * float((i * 2654435761u) % 1000) / 1000.0f);
             double expect = bruteMinDistance(clustered, dim, n) / maxPackingDistance(dim, n);
             BOOST_CHECK_CLOSE(relativeRadius(dim, clustered.data(), n), expect, 1e-4);
+        }
+}
+
+namespace {
+
+// The study's test, written out: some periodic image q = p + shift (float) of the dart has a squared distance
+// below r^2 to s, summed over the axes in order.
+template <int D>
+bool anyImageWithin(const std::vector<std::array<float, D>>& stored, const std::array<float, D>& p, float r) {
+    constexpr int kImages = D == 2 ? 9 : 27;
+    for (const auto& s : stored)
+        for (int image = 0; image < kImages; ++image) {
+            float e2 = 0.0f;
+            for (int k = 0, code = image; k < D; ++k, code /= 3) {
+                const float q = p[k] + float(code % 3 - 1);
+                e2 += (s[k] - q) * (s[k] - q);
+            }
+            if (e2 < r * r) return true;
+        }
+    return false;
+}
+
+template <int D>
+void checkDartGrid(uint32_t n, uint64_t seed) {
+    const float r0 = float(std::pow(double(n), -1.0 / D));
+    DartGrid<D> grid(n, r0);
+    SplitMix64 rng(seed);
+    float r = r0;
+    for (uint32_t dart = 0; grid.points().size() < n; ++dart) {
+        std::array<float, D> p;
+        for (float& c : p) c = rng.uniformFloat();
+        const bool expected = anyImageWithin<D>(grid.points(), p, r);
+        BOOST_REQUIRE_MESSAGE(grid.anyWithin(p, r) == expected,
+                              "D " << D << " n " << n << " seed " << seed << " dart " << dart << " r " << r);
+        if (!expected) grid.insert(p);
+        else if (dart % 64 == 63) r *= 0.75f; // shrink as dart throwing does, so small radii are covered too
+    }
+}
+
+} // namespace
+
+// The neighbour search of poisson-seed answers exactly as a scan over every stored point and every periodic
+// image, darts near faces and corners included, for grids of one cell, of a neighbourhood that wraps onto
+// itself (fewer than 3 cells per axis), and of many cells.
+BOOST_AUTO_TEST_CASE(dart_grid_answers_as_every_image_scan) {
+    for (uint32_t n : {1u, 2u, 4u, 8u, 9u, 16u, 27u, 64u, 300u})
+        for (uint64_t seed = 1; seed <= 8; ++seed) {
+            checkDartGrid<2>(n, seed);
+            checkDartGrid<3>(n, seed * 977);
         }
 }
