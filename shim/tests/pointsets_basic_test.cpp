@@ -160,10 +160,15 @@ BOOST_AUTO_TEST_CASE(relative_radius_matches_brute_force) {
 
 namespace {
 
-// The study's test, written out: some periodic image q = p + shift (float) of the dart has a squared distance
-// below r^2 to s, summed over the axes in order.
+// The study's test, written out: in 1D the minimum-image distance below r; in 2D and 3D some periodic image
+// q = p + shift (float) of the dart has a squared distance below r^2 to s, summed over the axes in order.
 template <int D>
 bool anyImageWithin(const std::vector<std::array<float, D>>& stored, const std::array<float, D>& p, float r) {
+    if constexpr (D == 1) {
+        for (const auto& s : stored)
+            if (std::fabs(torusDelta(p[0], s[0])) < r) return true;
+        return false;
+    }
     constexpr int kImages = D == 2 ? 9 : 27;
     for (const auto& s : stored)
         for (int image = 0; image < kImages; ++image) {
@@ -179,7 +184,7 @@ bool anyImageWithin(const std::vector<std::array<float, D>>& stored, const std::
 
 template <int D>
 void checkDartGrid(uint32_t n, uint64_t seed) {
-    const float r0 = float(std::pow(double(n), -1.0 / D));
+    const float r0 = D == 1 ? 1.0f / float(n) : float(std::pow(double(n), -1.0 / D));
     DartGrid<D> grid(n, r0);
     SplitMix64 rng(seed);
     float r = r0;
@@ -202,6 +207,7 @@ void checkDartGrid(uint32_t n, uint64_t seed) {
 BOOST_AUTO_TEST_CASE(dart_grid_answers_as_every_image_scan) {
     for (uint32_t n : {1u, 2u, 4u, 8u, 9u, 16u, 27u, 64u, 300u})
         for (uint64_t seed = 1; seed <= 8; ++seed) {
+            checkDartGrid<1>(n, seed * 31);
             checkDartGrid<2>(n, seed);
             checkDartGrid<3>(n, seed * 977);
         }

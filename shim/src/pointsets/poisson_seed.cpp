@@ -10,15 +10,13 @@
 //       else if ++failures == TRY_LIMIT (100):          r <- 0.75 r; failures <- 0
 //
 // r0 = 1/sqrt(N) in 2D (the study's value). Its analogues: 1/N in 1D and N^(-1/3) in 3D, i.e. the spacing
-// of a regular grid of N points, which is what 1/sqrt(N) is in 2D. Neighbour search: std::set in 1D, a grid
-// of cells no smaller than r0 in 2D and 3D (dart_grid.h). Terminates for every N: r shrinks geometrically, so
+// of a regular grid of N points, which is what 1/sqrt(N) is in 2D. Neighbour search: a grid of cells no smaller
+// than r0 (dart_grid.h). Terminates for every N: r shrinks geometrically, so
 // the acceptance probability tends to 1. The cost that matters is the algorithm's: its darts, most of them
 // misses (100 per radius it gives up), not the neighbour search.
 #include "pointsets.h"
 
 #include <cmath>
-#include <iterator>
-#include <set>
 
 #include "dart_grid.h"
 #include "random.h"
@@ -30,38 +28,9 @@ namespace {
 constexpr int kTryLimit = 100;
 constexpr float kShrink = 0.75f;
 
-std::vector<float> dartThrowing1D(uint32_t n, SplitMix64& rng) {
-    std::set<float> accepted;
-    std::vector<float> order; // insertion order, as in 2D/3D (the set itself is sorted)
-    order.reserve(n);
-    float r = 1.0f / float(n);
-    int failures = 0;
-    auto distance = [](float a, float b) { return std::fabs(torusDelta(a, b)); };
-    while (accepted.size() < n) {
-        float x = rng.uniformFloat();
-        bool free = true;
-        if (!accepted.empty()) {
-            // The nearest accepted points are the successor and predecessor of x, cyclically.
-            auto next = accepted.lower_bound(x);
-            auto succ = next == accepted.end() ? accepted.begin() : next;
-            auto pred = next == accepted.begin() ? std::prev(accepted.end()) : std::prev(next);
-            free = distance(x, *succ) >= r && distance(x, *pred) >= r;
-        }
-        if (free) {
-            accepted.insert(x);
-            order.push_back(x);
-            failures = 0;
-        } else if (++failures == kTryLimit) {
-            r *= kShrink;
-            failures = 0;
-        }
-    }
-    return order;
-}
-
 template <int D>
-std::vector<float> dartThrowingTree(uint32_t n, SplitMix64& rng) {
-    float r = float(std::pow(double(n), -1.0 / D));
+std::vector<float> dartThrowing(uint32_t n, SplitMix64& rng) {
+    float r = D == 1 ? 1.0f / float(n) : float(std::pow(double(n), -1.0 / D));
     DartGrid<D> grid(n, r);
     int failures = 0;
     while (grid.points().size() < n) {
@@ -87,9 +56,9 @@ std::vector<float> generatePoissonSeed(int dim, uint32_t n, uint64_t seed) {
     if (n == 0 || n > kMaxPoints || dim < 1 || dim > 3) return {};
     SplitMix64 rng(deriveSeed(seed, 0x5eed0000u + uint64_t(dim)));
     switch (dim) {
-    case 1: return dartThrowing1D(n, rng);
-    case 2: return dartThrowingTree<2>(n, rng);
-    default: return dartThrowingTree<3>(n, rng);
+    case 1: return dartThrowing<1>(n, rng);
+    case 2: return dartThrowing<2>(n, rng);
+    default: return dartThrowing<3>(n, rng);
     }
 }
 
