@@ -6,7 +6,9 @@
 
 #include "sampling/warps.h"
 
-#include <complex>
+#include <algorithm>
+#include <cmath>
+
 
 namespace stipple::render {
 
@@ -91,17 +93,26 @@ inline float fresnelDielectric(float cosThetaI, float eta) {
     return (rParl * rParl + rPerp * rPerp) / 2;
 }
 
-// Fresnel reflectance of a conductor with complex IOR eta + i k (one channel).
+// Fresnel reflectance of a conductor with complex IOR eta + i k (one channel), in real arithmetic: with
+// a^2 - b^2 = eta^2 - k^2 - sin^2 and a^2 + b^2 = sqrt((eta^2 - k^2 - sin^2)^2 + 4 eta^2 k^2), where a + i b is the
+// refracted cosine times the IOR, Rs = (a^2 + b^2 + cos^2 - 2 a cos) / (a^2 + b^2 + cos^2 + 2 a cos) and
+// Rp = Rs (cos^2 (a^2 + b^2) - 2 a cos sin^2 + sin^4) / (cos^2 (a^2 + b^2) + 2 a cos sin^2 + sin^4). The same value as
+// the complex form, without its library calls (complex division and square root), and as accurate.
 inline float fresnelConductor(float cosThetaI, float eta, float k) {
-    using C = std::complex<float>;
-    cosThetaI = clampf(cosThetaI, 0, 1);
-    C e(eta, k);
-    float sin2i = 1 - cosThetaI * cosThetaI;
-    C sin2t = sin2i / (e * e);
-    C cost = std::sqrt(C(1) - sin2t);
-    C rParl = (e * cosThetaI - cost) / (e * cosThetaI + cost);
-    C rPerp = (cosThetaI - e * cost) / (cosThetaI + e * cost);
-    return (std::norm(rParl) + std::norm(rPerp)) / 2;
+    const float c = clampf(cosThetaI, 0, 1);
+    const float cos2 = c * c, sin2 = 1 - cos2;
+    const float eta2 = eta * eta, k2 = k * k;
+    const float t0 = eta2 - k2 - sin2;
+    const float a2plusb2 = std::sqrt(t0 * t0 + 4 * eta2 * k2);
+    // a^2 = (a^2 + b^2 + t0) / 2, or, where t0 < 0 would cancel (eta < 1, small k), the same value as
+    // 2 eta^2 k^2 / (a^2 + b^2 - t0), since (a^2 + b^2)^2 - t0^2 = 4 eta^2 k^2.
+    const float a2 = t0 >= 0 ? 0.5f * (a2plusb2 + t0) : (a2plusb2 - t0 > 0 ? 2 * eta2 * k2 / (a2plusb2 - t0) : 0.0f);
+    const float a = std::sqrt(a2);
+    const float t1 = a2plusb2 + cos2, t2 = 2 * c * a;
+    const float Rs = t1 + t2 > 0 ? (t1 - t2) / (t1 + t2) : 1.0f;
+    const float t3 = cos2 * a2plusb2 + sin2 * sin2, t4 = t2 * sin2;
+    const float Rp = t3 + t4 > 0 ? Rs * (t3 - t4) / (t3 + t4) : Rs;
+    return clampf(0.5f * (Rp + Rs), 0, 1);
 }
 
 } // namespace stipple::render
