@@ -319,13 +319,6 @@ bool RenderScene::intersect(const Ray& ray, SurfaceHit& hit) const {
 
 void RenderScene::intersectPacket(const Ray* rays, int count, TracedHit* hits) const {
     static_assert(kPacketSize == 16, "the packet query below is rtcIntersect16");
-    if (!instances_.empty()) {
-        // Embree's packet traversal finds hits inside instances that differ from its single-ray traversal's in
-        // the last bits (4% of the Italian City's pixels moved): with instances, one ray at a time, so that an
-        // image depends on the seed alone and not on how its rays were grouped.
-        for (int i = 0; i < count; ++i) hits[i].found = intersect(rays[i], hits[i].hit);
-        return;
-    }
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT; // a hint only: the hits do not depend on it
@@ -382,10 +375,6 @@ bool RenderScene::occludedBetween(const Vec3& p, const Vec3& ng, const Vec3& tar
 }
 
 void RenderScene::occludedPacket(const Ray* rays, int count, bool* blocked) const {
-    if (!instances_.empty()) { // as intersectPacket
-        for (int i = 0; i < count; ++i) blocked[i] = occluded(rays[i]);
-        return;
-    }
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;

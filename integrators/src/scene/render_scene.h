@@ -44,12 +44,13 @@ public:
 
     // Closest hit along ray within (0, ray.tMax). Sets the FTZ/DAZ-independent results only.
     bool intersect(const Ray& ray, SurfaceHit& hit) const;
-    // Closest hits of up to kPacketSize rays that start together (one pixel's camera rays) in one packet query:
-    // the same hits as intersect() on each ray, found by traversing the BVH once for the bundle (one ray at a
-    // time in scenes with instances, where Embree's packet hits are not bitwise its single-ray hits).
+    // Closest hits of up to kPacketSize rays that start together (one pixel's camera rays) in one packet query,
+    // traversing the BVH once for the bundle. The hits are intersect()'s on each ray, except inside instances,
+    // where Embree's packet kernels transform rays in their own order and a hit may move in its last bits; a
+    // pixel's packets are fixed by the sample count, so an image still depends on the seed and spp alone.
     static constexpr int kPacketSize = 16;
     void intersectPacket(const Ray* rays, int count, TracedHit* hits) const;
-    // Whether each of up to kPacketSize rays (tMax set) is blocked, in one packet query (one at a time with instances).
+    // Whether each of up to kPacketSize rays (tMax set) is blocked, in one packet query.
     void occludedPacket(const Ray* rays, int count, bool* blocked) const;
     // The shadow ray occludedBetween traces: false when there is none to trace (the points coincide).
     static bool shadowRay(const Vec3& p, const Vec3& ng, const Vec3& target, Ray& ray);
