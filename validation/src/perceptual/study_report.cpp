@@ -3,17 +3,13 @@
 
 #include "perceptual/study_report.h"
 
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "run/results.h"
+#include "base/gnuplot.h"
 #include "base/text.h"
 #include "report/verdicts_report.h"
 #include "perceptual/experiment.h"
@@ -23,29 +19,6 @@ namespace stipple::validation {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string gq(const std::string& s) {
-    std::string o = "'";
-    for (char c : s) o += c == '\'' ? std::string("''") : std::string(1, c);
-    return o + "'";
-}
-
-// gnuplot `script` in `dir`, stderr to <script>.log there, no shell. Returns its exit status or -1.
-int runGnuplotScript(const std::string& dir, const std::string& script) {
-    const pid_t pid = fork();
-    if (pid < 0) return -1;
-    if (pid == 0) {
-        if (chdir(dir.c_str()) != 0) _exit(126);
-        const int log = open((script + ".log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (log >= 0) dup2(log, STDERR_FILENO);
-        execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 std::string plotStem(size_t set) { return "perceptual-set-" + std::to_string(set + 1); }
 
@@ -71,19 +44,21 @@ bool writeStudyPlots(const std::string& plotsDir, const StudyKey& key, const Stu
                     lo = std::min(lo, v);
                     hi = std::max(hi, v);
                 }
-        script += "reset\nset terminal pngcairo size 420,320 enhanced font ',10'\nset output " + gq(stem + ".png") +
-                  "\nset title " + gq(set.name + fmt(", %u spp", set.spp)) + " noenhanced\n" +
+        script += "reset\nset terminal pngcairo size 420,320 enhanced font ',10'\nset output " +
+                  gnuplotQuoted(stem + ".png") + "\nset title " + gnuplotQuoted(set.name + fmt(", %u spp", set.spp)) +
+                  " noenhanced\n" +
                   "set ylabel 'quality, JOD (95% interval over observers)'\nset grid ytics\nunset key\n" +
                   fmt("set xrange [-0.5:%zu.5]\nset yrange [%g:%g]\n", set.crops.size() - 1, lo - 0.3, hi + 0.3) +
                   "set xtics noenhanced\nset arrow from -0.5,0 to " + fmt("%zu.5", set.crops.size() - 1) +
                   ",0 nohead dt 2 lc rgb '#888888'\nplot ";
         for (size_t i = 0; i < set.crops.size(); ++i)
-            script += (i ? ", " : "") + gq(stem + ".dat") + fmt(" every ::%zu::%zu using 1:3:4:5:xtic(2)", i, i) +
-                      " with yerrorbars pt 7 ps 1.4 lw 2 lc rgb " + gq(patternColor(set.crops[i].pattern));
+            script += (i ? ", " : "") + gnuplotQuoted(stem + ".dat") +
+                      fmt(" every ::%zu::%zu using 1:3:4:5:xtic(2)", i, i) +
+                      " with yerrorbars pt 7 ps 1.4 lw 2 lc rgb " + gnuplotQuoted(patternColor(set.crops[i].pattern));
         script += "\nunset output\n";
     }
     writeTextFile((fs::path(plotsDir) / "perceptual.gp").string(), script);
-    const int rc = runGnuplotScript(plotsDir, "perceptual.gp");
+    const int rc = runGnuplot(plotsDir, "perceptual.gp", "perceptual.gp.log");
     if (rc != 0)
         std::cerr << "stipple-validate: gnuplot failed on the perceptual plots (exit " << rc << "); see " << plotsDir
                   << "/perceptual.gp.log\n";

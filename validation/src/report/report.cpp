@@ -2,6 +2,7 @@
 // Copyright 2026 The stipple authors
 
 #include "report/report.h"
+#include "base/gnuplot.h"
 #include "base/text.h"
 
 #include "claims/comparison_claims.h"
@@ -18,41 +19,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <cerrno>
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 namespace stipple::validation {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Single-quoted gnuplot string.
-std::string gq(const std::string& s) {
-    std::string o = "'";
-    for (char c : s) o += c == '\'' ? std::string("''") : std::string(1, c);
-    return o + "'";
-}
-
-// Runs `gnuplot plots.gp` in `plotsDir` with stderr to gnuplot.log there, without a shell (any path works).
-// Returns its exit status, or -1 when it could not be started.
-int runGnuplot(const std::string& plotsDir) {
-    const pid_t pid = fork();
-    if (pid < 0) return -1;
-    if (pid == 0) {
-        if (chdir(plotsDir.c_str()) != 0) _exit(126);
-        const int log = open("gnuplot.log", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (log >= 0) dup2(log, STDERR_FILENO);
-        execlp("gnuplot", "gnuplot", "plots.gp", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // A number in a gnuplot data file: full precision; gnuplot skips the non-finite "null".
 std::string plotNumber(double v) { return std::isfinite(v) ? fmt("%.17g", v) : std::string("null"); }
@@ -135,16 +106,17 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
         auto panels = [&](bool bySeconds) {
             std::string cmd;
             for (size_t i = 0; i < n; ++i) {
-                cmd += "set title " + gq(m.patterns[i]) + " noenhanced textcolor rgb " + gq(patternColor(m.patterns[i])) +
-                       "\nplot ";
+                cmd += "set title " + gnuplotQuoted(m.patterns[i]) + " noenhanced textcolor rgb " +
+                       gnuplotQuoted(patternColor(m.patterns[i])) + "\nplot ";
                 for (size_t j = 0; j < n; ++j)
                     if (j != i)
-                        cmd += gq(base + ".dat") + fmt(" index %zu using %s with lines lc rgb '#c8c8c8' lw 1 notitle, ",
-                                                      j, bySeconds ? "5:2" : "1:2");
-                cmd += gq(base + ".dat") + fmt(" index %zu ", i) +
+                        cmd += gnuplotQuoted(base + ".dat") +
+                               fmt(" index %zu using %s with lines lc rgb '#c8c8c8' lw 1 notitle, ", j,
+                                   bySeconds ? "5:2" : "1:2");
+                cmd += gnuplotQuoted(base + ".dat") + fmt(" index %zu ", i) +
                        (bySeconds ? "using 5:2 with linespoints" : "using 1:2:3:4 with yerrorlines") +
-                       fmt(" lw 2 pt %d ps 0.9 lc rgb ", patternPointType(i)) + gq(patternColor(m.patterns[i])) +
-                       " notitle\n";
+                       fmt(" lw 2 pt %d ps 0.9 lc rgb ", patternPointType(i)) +
+                       gnuplotQuoted(patternColor(m.patterns[i])) + " notitle\n";
             }
             return cmd;
         };
@@ -165,14 +137,15 @@ bool writePlots(const std::string& dir, const ReportInputs& in) {
             for (const char* terminal : {"pngcairo size 1200,%zu font ',9'", "svg size 1200,%zu font ',9'"}) {
                 const bool png = terminal[0] == 'p';
                 script += "reset\nset terminal " + fmt(terminal, 250 * rows) + "\nset output " +
-                          gq(stem + (png ? ".png" : ".svg")) + "\n" + fmt("set multiplot layout %zu,%zu\n", rows, columns) +
-                          common + panels(bySeconds) + "unset multiplot\nunset output\n";
+                          gnuplotQuoted(stem + (png ? ".png" : ".svg")) + "\n" +
+                          fmt("set multiplot layout %zu,%zu\n", rows, columns) + common + panels(bySeconds) +
+                          "unset multiplot\nunset output\n";
             }
         }
     }
     writeTextFile((fs::path(dir) / "plots" / "plots.gp").string(), script);
     // gnuplot runs inside plots/ so the script names files relative to it.
-    const int rc = runGnuplot((fs::path(dir) / "plots").string());
+    const int rc = runGnuplot((fs::path(dir) / "plots").string(), "plots.gp", "gnuplot.log");
     if (rc != 0) {
         std::cerr << "stipple-validate: gnuplot failed (exit " << rc << "); see " << dir
                   << "/plots/gnuplot.log. Tables and data are written; plots are missing.\n";
