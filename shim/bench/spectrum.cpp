@@ -189,6 +189,13 @@ Row measureDart(double rho, uint32_t arity, uint32_t n, uint32_t pixels) {
                            values = arity == 1   ? stipple::bench::dartThrowing<1>(n, r, seed)
                                     : arity == 2 ? stipple::bench::dartThrowing<2>(n, r, seed)
                                                  : stipple::bench::dartThrowing<3>(n, r, seed);
+                           if (values.empty()) {
+                               char text[160];
+                               std::snprintf(text, sizeof text,
+                                             "--dart-rhos %.2f: dart throwing jammed 64 times in a row before %u "
+                                             "points in %uD (beyond the jamming radius)", rho, n, arity);
+                               fail(text);
+                           }
                        });
 }
 
