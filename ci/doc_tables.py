@@ -126,7 +126,8 @@ def derive_sources():
 TABLES = [
     Table("validate-options", "validation/docs/options.md", ["validation/src/**"], derive=derive_options),
     Table("validate-sources", "validation/docs/sources.md", ["validation/src/**"], derive=derive_sources),
-    Table("spectra", "shim/POINTSETS-spectra.md", ["shim/bench/spectrum.cpp"],
+    Table("spectra", "shim/POINTSETS-spectra.md",
+          ["shim/bench/spectrum.cpp", "shim/bench/dart_reference.h", "shim/bench/set_spectra.h"],
           served="--select poisson,poisson-seed,independent",
           command="{bin}/shim_spectrum > {out}"),
     Table("battery", "shim/docs/tables/battery.md",
@@ -146,11 +147,11 @@ TABLES = [
           ["shim/bench/blue_noise_gain.cpp", "shim/bench/battery_grown.h"],
           served="--select stratified,stratified+blue-noise,independent,independent+blue-noise",
           command="{bin}/shim_blue_noise_gain -o {tmp} --grown --patterns stratified,independent --images 8 "
-                  "--size 128 && cp {tmp}/blue_noise_grown.md {out}"),
-    Table("spectra-dart", "shim/docs/tables/spectra-dart.md", ["shim/bench/spectrum.cpp", "shim/bench/dart_reference.h"],
+                  "--size 128 --confirm 32 && cp {tmp}/blue_noise_grown.md {out}"),
+    Table("spectra-dart", "shim/docs/tables/spectra-dart.md",
+          ["shim/bench/spectrum.cpp", "shim/bench/dart_reference.h", "shim/bench/set_spectra.h"],
           served="--select poisson,poisson-seed,independent",
-          command="{bin}/shim_spectrum --dart --patterns poisson,poisson-seed,independent --arities 2,3 "
-                  "--ns 16,64,256,1024 > {out}"),
+          command="{bin}/shim_spectrum --dart > {out}"),
     Table("prefixes", "shim/docs/tables/prefixes.md", ["shim/bench/progressive_prefixes.cpp"],
           served="--select independent,stratified,poisson",
           command="{bin}/shim_progressive_prefixes > {out}"),

@@ -168,13 +168,15 @@ private:
     std::vector<float> points_;
 };
 
-// n points of dart throwing at radius r on the D-torus, fresh from `seed` (the next seeds if a run jams).
+// n points of dart throwing at radius r on the D-torus, fresh from `seed` (the next seeds if a run jams); empty if
+// 64 runs jam in a row (r beyond what the torus holds n of: 1D jams at 0.7476 / n, Renyi's constant).
 template <int D>
 std::vector<float> dartThrowing(uint32_t n, double r, uint64_t seed) {
-    for (uint64_t attempt = 0;; ++attempt) {
+    for (uint64_t attempt = 0; attempt < 64; ++attempt) {
         DartThrowing<D> run(n, r, seed * 0x9e3779b97f4a7c15ull + attempt);
         if (run.run()) return run.points();
     }
+    return {};
 }
 
 } // namespace stipple::bench

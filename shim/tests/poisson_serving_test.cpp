@@ -14,6 +14,7 @@
 #include "pointsets/pointsets.h"
 #include "pointsets/spectrum.h"
 #include "poisson_cache.h"
+#include "../bench/set_spectra.h"
 
 #include <algorithm>
 #include <cmath>
@@ -210,4 +211,37 @@ BOOST_AUTO_TEST_CASE(three_and_one_dimensional_served_sets_are_a_poisson_disk) {
     const ServedMeasures dart1 = measureServed(STIPPLE_PATTERN_POISSON_SEED, 1, 1024, 48);
     BOOST_TEST_MESSAGE("1D N=1024: RAPS peak " << poisson1.raps << " (dart " << dart1.raps << ")");
     BOOST_CHECK_LE(poisson1.raps, 1.15 * dart1.raps);
+}
+
+// shim_spectrum's bootstrap keeps each set's periodogram (bench/set_spectra.h) and measures weighted averages of them:
+// with unit weights, and with weights w (set s added w_s times in a row), its measures are PowerSpectrum's.
+BOOST_AUTO_TEST_CASE(kept_set_spectra_measure_as_the_power_spectrum) {
+    const uint32_t weights[] = {1, 3, 0, 2, 1};
+    for (uint32_t arity = 1; arity <= 3; ++arity)
+        for (uint32_t n : {64u, 1000u}) {
+            const int K = int(std::floor(2.0 * std::pow(double(n), 1.0 / arity) + 1e-9));
+            const int width = arity == 1 ? int(n / 32) : 1;
+            stipple::detail::pointsets::PowerSpectrum once(int(arity), K, width), weighted(int(arity), K, width);
+            stipple::bench::SetSpectra kept(int(arity), K, width);
+            auto s = makeSampler(STIPPLE_PATTERN_POISSON, n, 77, {{arity, 1}});
+            std::vector<uint32_t> w;
+            for (uint32_t p = 0; p < 5; ++p) {
+                const std::vector<float> v = fillPixel(s.get(), p, 3, 0);
+                once.add(v.data(), n);
+                for (uint32_t i = 0; i < weights[p]; ++i) weighted.add(v.data(), n);
+                kept.add(v.data(), n);
+                w.push_back(weights[p]);
+            }
+            BOOST_TEST_CONTEXT("arity " << arity << " N=" << n) {
+                for (int pass = 0; pass < 2; ++pass) {
+                    const auto& reference = pass == 0 ? once : weighted;
+                    const auto m = kept.measures(pass == 0 ? std::vector<uint32_t>{} : w);
+                    BOOST_TEST(m.peak == reference.largestPeak(), boost::test_tools::tolerance(1e-12));
+                    BOOST_TEST(m.peakRadius == reference.largestPeakRadius());
+                    BOOST_TEST(m.raps == reference.rapsPeak(), boost::test_tools::tolerance(1e-12));
+                    if (arity == 1) BOOST_TEST(std::isnan(m.anisotropy));
+                    else BOOST_TEST(m.anisotropy == reference.medianAnisotropy(), boost::test_tools::tolerance(1e-9));
+                }
+            }
+        }
 }
