@@ -175,7 +175,7 @@ private:
     Spectrum hitEmitter(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int t) const {
         const PathVertex& z = cam[size_t(t - 1)];
         if (z.light < 0) return {};
-        Spectrum Le = eval_.Le(z, cam[size_t(t - 2)]);
+        Spectrum Le = eval_.Le(z, z.wPrev);
         if (Le.isBlack()) return {};
         return z.beta * Le * weight(light, cam, 0, t, {});
     }
@@ -196,13 +196,15 @@ private:
         y.n = y.ns = ls.n;
         y.light = int(li);
         y.pdfFwd = eval_.pdfLightOrigin(y);
-        Spectrum c = z.beta * eval_.f(&cam[size_t(t - 2)], z, y, TransportMode::Radiance) * ls.L *
+        const Link link(y, z);
+        Spectrum c = z.beta * eval_.f(z, link.zy, link.zyLocal, TransportMode::Radiance) * ls.L *
                      (absDot(z.ns, ls.wi) / (pmf * ls.pdf));
         if (c.isBlack()) return {};
         ++tile.rays;
         if (scene_.occludedBetween(z.p, z.n, ls.p)) return {};
         ConnectionVertices fresh;
         fresh.freshLight = &y;
+        fresh.link = &link;
         return c * weight(light, cam, 1, t, fresh);
     }
 
@@ -211,13 +213,16 @@ private:
                           TileContext& tile) const {
         const PathVertex &y = light[size_t(s - 1)], &z = cam[size_t(t - 1)];
         if (y.delta || z.delta) return {};
-        Spectrum c = y.beta * eval_.f(&light[size_t(s - 2)], y, z, TransportMode::Importance) *
-                     eval_.f(&cam[size_t(t - 2)], z, y, TransportMode::Radiance) * z.beta *
+        const Link link(y, z);
+        Spectrum c = y.beta * eval_.f(y, link.yz, link.yzLocal, TransportMode::Importance) *
+                     eval_.f(z, link.zy, link.zyLocal, TransportMode::Radiance) * z.beta *
                      PathEvaluator::geometry(y, z);
         if (c.isBlack()) return {};
         ++tile.rays;
         if (scene_.occludedBetween(z.p, z.n, y.p)) return {};
-        return c * weight(light, cam, s, t, {});
+        ConnectionVertices connection;
+        connection.link = &link;
+        return c * weight(light, cam, s, t, connection);
     }
 
     // t = 1: connect y_{s-1} to a lens point and splat the contribution where it lands on the film.
@@ -231,13 +236,15 @@ private:
         z.kind = VertexKind::Camera;
         z.p = cs.pLens;
         z.n = z.ns = cs.nLens;
-        const PathVertex* prev = s >= 2 ? &light[size_t(s - 2)] : nullptr;
-        Spectrum c = y.beta * eval_.f(prev, y, z, TransportMode::Importance) * cs.We * (absDot(y.ns, cs.wi) / cs.pdf);
+        const Link link(y, z);
+        Spectrum c = y.beta * eval_.f(y, link.yz, link.yzLocal, TransportMode::Importance) * cs.We *
+                     (absDot(y.ns, cs.wi) / cs.pdf);
         if (c.isBlack()) return;
         ++tile.rays;
         if (scene_.occludedBetween(y.p, y.n, cs.pLens)) return;
         ConnectionVertices fresh;
         fresh.freshCamera = &z;
+        fresh.link = &link;
         std::vector<PathVertex> noCamera; // t = 1 reads only the fresh lens vertex
         tile.splats->add(cs.raster, c * weight(light, noCamera, s, 1, fresh), tile.width, tile.height);
     }

@@ -9,7 +9,6 @@ namespace {
 struct Scratch {
     std::vector<const PathVertex*> x;
     std::vector<double> fromLight, fromCamera; // area densities of x_j from either end, zeros read as 1
-    std::vector<char> delta;
 };
 inline double remapZero(double p) { return p != 0 ? p : 1.0; }
 } // namespace
@@ -18,55 +17,54 @@ float MisWeights::weight(const std::vector<PathVertex>& lightPath, const std::ve
                          int t, const ConnectionVertices& fresh) const {
     const int n = s + t;
     thread_local Scratch sc;
-    sc.x.resize(size_t(n));
-    sc.fromLight.assign(size_t(n), 0.0);
-    sc.fromCamera.assign(size_t(n), 0.0);
-    sc.delta.assign(size_t(n), 0);
-    for (int j = 0; j < s; ++j)
-        sc.x[size_t(j)] = (s == 1 && fresh.freshLight) ? fresh.freshLight : &lightPath[size_t(j)];
-    for (int j = s; j < n; ++j)
-        sc.x[size_t(j)] = (t == 1 && fresh.freshCamera) ? fresh.freshCamera : &cameraPath[size_t(n - 1 - j)];
-    auto X = [&](int j) -> const PathVertex& { return *sc.x[size_t(j)]; };
+    if (sc.x.size() < size_t(n)) { // grows to the longest path once; every entry below is written before use
+        sc.x.resize(size_t(n));
+        sc.fromLight.resize(size_t(n));
+        sc.fromCamera.resize(size_t(n));
+    }
+    const PathVertex** x = sc.x.data();
+    double* fromLight = sc.fromLight.data();
+    double* fromCamera = sc.fromCamera.data();
+    for (int j = 0; j < s; ++j) x[j] = (s == 1 && fresh.freshLight) ? fresh.freshLight : &lightPath[size_t(j)];
+    for (int j = s; j < n; ++j) x[j] = (t == 1 && fresh.freshCamera) ? fresh.freshCamera : &cameraPath[size_t(n - 1 - j)];
 
-    for (int j = 0; j < n; ++j) {
-        const PathVertex& v = X(j);
-        sc.delta[size_t(j)] = v.delta;
-        // Densities fixed by each subpath's own walk.
-        if (j < s) {
-            sc.fromLight[size_t(j)] = v.pdfFwd;
-            if (j < s - 2) sc.fromCamera[size_t(j)] = v.pdfRev;
-        } else {
-            sc.fromCamera[size_t(j)] = v.pdfFwd;
-            if (j > s + 1) sc.fromLight[size_t(j)] = v.pdfRev;
-        }
+    // Densities fixed by each subpath's own walk.
+    for (int j = 0; j < s; ++j) {
+        fromLight[j] = x[j]->pdfFwd;
+        fromCamera[j] = j < s - 2 ? x[j]->pdfRev : 0.0;
+    }
+    for (int j = s; j < n; ++j) {
+        fromCamera[j] = x[j]->pdfFwd;
+        fromLight[j] = j > s + 1 ? x[j]->pdfRev : 0.0;
     }
     // Densities that depend on the connection between x_{s-1} and x_s.
-    const PathVertex& xs = X(s);
+    const PathVertex& xs = *x[s];
     if (s == 0) {
-        sc.fromLight[0] = eval_.pdfLightOrigin(xs);
-        if (n > 2) sc.fromLight[1] = eval_.pdfLightEmission(xs, X(1));
+        fromLight[0] = eval_.pdfLightOrigin(xs);
+        if (n > 2) fromLight[1] = eval_.pdfLightEmission(xs, *x[1]);
     } else {
-        const PathVertex& xl = X(s - 1);
-        sc.fromLight[size_t(s)] = eval_.pdf(s >= 2 ? &X(s - 2) : nullptr, xl, xs);
-        if (s + 1 < n - 1) sc.fromLight[size_t(s + 1)] = eval_.pdf(&xl, xs, X(s + 1));
-        sc.fromCamera[size_t(s - 1)] = eval_.pdf(t >= 2 ? &X(s + 1) : nullptr, xs, xl);
-        if (s >= 2) sc.fromCamera[size_t(s - 2)] = eval_.pdf(&xs, xl, X(s - 2));
+        const Link& link = *fresh.link;
+        const PathVertex& xl = *x[s - 1];
+        fromLight[s] = eval_.pdfOnward(xl, link.yz, link.yzLocal, xs);
+        if (s + 1 < n - 1) fromLight[s + 1] = PathEvaluator::pdfBackward(xs, link.zyLocal, *x[s + 1]);
+        fromCamera[s - 1] = eval_.pdfOnward(xs, link.zy, link.zyLocal, xl);
+        if (s >= 2) fromCamera[s - 2] = PathEvaluator::pdfBackward(xl, link.yzLocal, *x[s - 2]);
     }
     // x_0 from the light side: by area (light subpaths) or by the s = 1 connection's own sampling.
-    const double pOrigin = remapZero(eval_.pdfLightOrigin(X(0)));
-    const double pConnect = n >= 3 ? remapZero(eval_.pdfLightConnect(X(0), X(1))) : pOrigin;
+    const double pOrigin = remapZero(eval_.pdfLightOrigin(*x[0]));
+    const double pConnect = n >= 3 ? remapZero(eval_.pdfLightConnect(*x[0], *x[1])) : pOrigin;
     for (int j = 0; j < n; ++j) {
-        sc.fromLight[size_t(j)] = remapZero(sc.fromLight[size_t(j)]);
-        sc.fromCamera[size_t(j)] = remapZero(sc.fromCamera[size_t(j)]);
+        fromLight[j] = remapZero(fromLight[j]);
+        fromCamera[j] = remapZero(fromCamera[j]);
     }
     // p_{i+1} / p_i. Strategy 1 (n >= 3) uses pConnect for x_0, every other s' >= 1 uses pOrigin.
     auto ratioUp = [&](int i) -> double {
-        if (i == 0) return pConnect / sc.fromCamera[0];
-        double r = sc.fromLight[size_t(i)] / sc.fromCamera[size_t(i)];
+        if (i == 0) return pConnect / fromCamera[0];
+        double r = fromLight[i] / fromCamera[i];
         if (i == 1) r *= pOrigin / pConnect;
         return r;
     };
-    auto valid = [&](int sp) { return sp == 0 || (!sc.delta[size_t(sp - 1)] && !sc.delta[size_t(sp)]); };
+    auto valid = [&](int sp) { return sp == 0 || (!x[sp - 1]->delta && !x[sp]->delta); };
 
     double sum = 1.0; // the strategy itself: r_s = 1
     double r = 1.0;

@@ -22,13 +22,14 @@ namespace stipple::render::bdpt {
 struct ConnectionVertices {
     const PathVertex* freshLight = nullptr;  // s = 1: the fresh light sample replacing lightPath[0]
     const PathVertex* freshCamera = nullptr; // t = 1: the lens point sampled towards the light vertex
+    const Link* link = nullptr;              // s >= 1: the connection x_{s-1} -- x_s (fresh vertices included)
 };
 
 class MisWeights {
 public:
     explicit MisWeights(const PathEvaluator& eval) : eval_(eval) {}
-    // Weight of strategy (s, t); s + t >= 2, t >= 1. Uses per-thread scratch space (no allocation per call
-    // once warm).
+    // Weight of strategy (s, t); s + t >= 2, t >= 1; fresh.link is required when s >= 1. Uses per-thread
+    // scratch space (no allocation per call once warm).
     float weight(const std::vector<PathVertex>& lightPath, const std::vector<PathVertex>& cameraPath, int s, int t,
                  const ConnectionVertices& fresh) const;
 

@@ -41,13 +41,16 @@ void SubpathGenerator::pushSurface(const SurfaceHit& hit, const Spectrum& beta, 
     v.beta = beta;
     v.delta = hit.material->isSpecular();
     v.pdfFwd = PathEvaluator::toArea(pdfDir, path.back(), v);
+    v.frame = Frame(v.ns);
+    v.wPrev = normalize(path.back().p - v.p);
+    v.wPrevLocal = v.frame.toLocal(v.wPrev);
     path.push_back(v);
 }
 
 bool SubpathGenerator::scatter(std::vector<PathVertex>& path, const Vec3& woW, float uc, Point2 u, TransportMode mode,
                                Spectrum& beta, float& pdfDir, Ray& ray) {
     const PathVertex& v = path.back();
-    Frame frame(v.ns);
+    const Frame& frame = v.frame;
     Vec3 wo = frame.toLocal(woW);
     BsdfSample bs;
     if (!v.material->sample(wo, uc, u, bs, mode)) return false;

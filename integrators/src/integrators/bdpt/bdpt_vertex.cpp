@@ -26,22 +26,32 @@ float PathEvaluator::geometry(const PathVertex& a, const PathVertex& b) {
     return absDot(a.ns, d) * inv * absDot(b.ns, d) * inv / dist2;
 }
 
-float PathEvaluator::pdf(const PathVertex* prev, const PathVertex& cur, const PathVertex& next) const {
+Link::Link(const PathVertex& y_, const PathVertex& z_) : y(y_), z(z_), yz(direction(y_, z_)), zy(direction(z_, y_)) {
+    if (y.kind == VertexKind::Surface) yzLocal = y.frame.toLocal(yz);
+    if (z.kind == VertexKind::Surface) zyLocal = z.frame.toLocal(zy);
+}
+
+float PathEvaluator::pdfOnward(const PathVertex& cur, const Vec3& w, const Vec3& wLocal,
+                               const PathVertex& next) const {
     switch (cur.kind) {
     case VertexKind::Camera: {
         float pdfPos, pdfDir;
-        camera_.pdfWe(Ray{cur.p, direction(cur, next)}, pdfPos, pdfDir);
+        camera_.pdfWe(Ray{cur.p, w}, pdfPos, pdfDir);
         return toArea(pdfDir, cur, next);
     }
-    case VertexKind::Light: return pdfLightEmission(cur, next);
-    case VertexKind::Surface: {
-        if (!prev) return 0;
-        Frame frame(cur.ns);
-        Vec3 wo = frame.toLocal(direction(cur, *prev)), wi = frame.toLocal(direction(cur, next));
-        return toArea(cur.material->pdf(wo, wi), cur, next);
+    case VertexKind::Light: {
+        if (cur.light < 0) return 0;
+        float pdfPos, pdfDir;
+        scene_.lights()[size_t(cur.light)].pdfLe(cur.n, w, pdfPos, pdfDir);
+        return toArea(pdfDir, cur, next);
     }
+    case VertexKind::Surface: return toArea(cur.material->pdf(cur.wPrevLocal, wLocal), cur, next);
     }
     return 0;
+}
+
+float PathEvaluator::pdfBackward(const PathVertex& cur, const Vec3& wLocal, const PathVertex& prev) {
+    return toArea(cur.material->pdf(wLocal, cur.wPrevLocal), cur, prev);
 }
 
 float PathEvaluator::pdfLightOrigin(const PathVertex& v) const {
@@ -63,16 +73,12 @@ float PathEvaluator::pdfLightConnect(const PathVertex& v, const PathVertex& ref)
     return toArea(scene_.lightChoicePmf(v.light) * light.pdfLi(ref.p, v.p, v.n), ref, v);
 }
 
-Spectrum PathEvaluator::f(const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
-                          TransportMode mode) const {
+Spectrum PathEvaluator::f(const PathVertex& cur, const Vec3& w, const Vec3& wLocal, TransportMode mode) const {
     switch (cur.kind) {
-    case VertexKind::Light: return Le(cur, next);
+    case VertexKind::Light: return Le(cur, w);
     case VertexKind::Surface: {
-        if (!prev) return {};
-        Vec3 woW = direction(cur, *prev), wiW = direction(cur, next);
-        Frame frame(cur.ns);
-        Spectrum v = cur.material->f(frame.toLocal(woW), frame.toLocal(wiW), mode);
-        if (mode == TransportMode::Importance) v *= shadingNormalCorrection(cur.ns, cur.n, woW, wiW);
+        Spectrum v = cur.material->f(cur.wPrevLocal, wLocal, mode);
+        if (mode == TransportMode::Importance) v *= shadingNormalCorrection(cur.ns, cur.n, cur.wPrev, w);
         return v;
     }
     case VertexKind::Camera: return {};
@@ -80,9 +86,9 @@ Spectrum PathEvaluator::f(const PathVertex* prev, const PathVertex& cur, const P
     return {};
 }
 
-Spectrum PathEvaluator::Le(const PathVertex& v, const PathVertex& towards) const {
+Spectrum PathEvaluator::Le(const PathVertex& v, const Vec3& w) const {
     if (v.light < 0) return {};
-    return scene_.lights()[size_t(v.light)].L(v.n, direction(v, towards));
+    return scene_.lights()[size_t(v.light)].L(v.n, w);
 }
 
 } // namespace stipple::render::bdpt
