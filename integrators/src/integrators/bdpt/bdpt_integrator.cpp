@@ -109,19 +109,21 @@ public:
         Spectrum L;
         const int nCam = int(cam.size()), nLight = int(light.size());
         const int chain = specularChainStart(cam);
+        LightStart start; // x_0's densities, shared by every strategy with s >= 2
+        if (nLight >= 2 && filter_.weighted) start = mis_.lightStart(light);
         for (int t = 1; t <= nCam; ++t) {
             const int sMax = std::min(nLight, maxDepth_ + 2 - t);
             for (int s = 0; s <= std::max(sMax, t >= 2 ? 1 : 0); ++s) {
                 if (s + t < 2 || s + t - 2 > maxDepth_ || !filter_.accepts(s, t)) continue;
                 if (t == 1) {
-                    if (s <= nLight) lightTracing(light, s, sv, tile);
+                    if (s <= nLight) lightTracing(light, s, start, sv, tile);
                 } else if (s == 0) {
                     Spectrum c = hitEmitter(light, cam, t);
                     L += endsChain(cam, chain, t) ? c * (1.0f / (kChainProbes + 1)) : c;
                 } else if (s == 1) {
                     L += freshLightSample(light, cam, t, sv, tile);
                 } else if (s <= nLight) {
-                    L += joinSubpaths(light, cam, s, t, tile);
+                    L += joinSubpaths(light, cam, s, t, start, tile);
                 }
             }
         }
@@ -210,7 +212,7 @@ private:
 
     // s >= 2, t >= 2: join y_{s-1} and z_{t-1}.
     Spectrum joinSubpaths(const std::vector<PathVertex>& light, const std::vector<PathVertex>& cam, int s, int t,
-                          TileContext& tile) const {
+                          const LightStart& start, TileContext& tile) const {
         const PathVertex &y = light[size_t(s - 1)], &z = cam[size_t(t - 1)];
         if (y.delta || z.delta) return {};
         const Link link(y, z);
@@ -222,11 +224,13 @@ private:
         if (scene_.occludedBetween(z.p, z.n, y.p)) return {};
         ConnectionVertices connection;
         connection.link = &link;
+        connection.lightStart = &start;
         return c * weight(light, cam, s, t, connection);
     }
 
     // t = 1: connect y_{s-1} to a lens point and splat the contribution where it lands on the film.
-    void lightTracing(const std::vector<PathVertex>& light, int s, const SampleView& sv, TileContext& tile) const {
+    void lightTracing(const std::vector<PathVertex>& light, int s, const LightStart& start, const SampleView& sv,
+                      TileContext& tile) const {
         const PathVertex& y = light[size_t(s - 1)];
         if (y.delta) return;
         Point2 uLens = sv.get2D(connectLens_[size_t(s)]);
@@ -245,6 +249,7 @@ private:
         ConnectionVertices fresh;
         fresh.freshCamera = &z;
         fresh.link = &link;
+        fresh.lightStart = &start;
         std::vector<PathVertex> noCamera; // t = 1 reads only the fresh lens vertex
         tile.splats->add(cs.raster, c * weight(light, noCamera, s, 1, fresh), tile.width, tile.height);
     }

@@ -51,8 +51,15 @@ float MisWeights::weight(const std::vector<PathVertex>& lightPath, const std::ve
         if (s >= 2) fromCamera[s - 2] = PathEvaluator::pdfBackward(xl, link.yzLocal, *x[s - 2]);
     }
     // x_0 from the light side: by area (light subpaths) or by the s = 1 connection's own sampling.
-    const double pOrigin = remapZero(eval_.pdfLightOrigin(*x[0]));
-    const double pConnect = n >= 3 ? remapZero(eval_.pdfLightConnect(*x[0], *x[1])) : pOrigin;
+    LightStart start0;
+    if (s >= 2 && fresh.lightStart) {
+        start0 = *fresh.lightStart;
+    } else if (n >= 3) {
+        start0 = start(*x[0], *x[1]);
+    } else {
+        start0.pOrigin = start0.pConnect = remapZero(eval_.pdfLightOrigin(*x[0]));
+    }
+    const double pOrigin = start0.pOrigin, pConnect = start0.pConnect;
     for (int j = 0; j < n; ++j) {
         fromLight[j] = remapZero(fromLight[j]);
         fromCamera[j] = remapZero(fromCamera[j]);
@@ -78,6 +85,13 @@ float MisWeights::weight(const std::vector<PathVertex>& lightPath, const std::ve
         if (valid(sp)) sum += r * r;
     }
     return std::isfinite(sum) ? float(1.0 / sum) : 0.0f;
+}
+
+LightStart MisWeights::start(const PathVertex& x0, const PathVertex& x1) const {
+    LightStart l;
+    l.pOrigin = remapZero(eval_.pdfLightOrigin(x0));
+    l.pConnect = remapZero(eval_.pdfLightConnect(x0, x1));
+    return l;
 }
 
 } // namespace stipple::render::bdpt

@@ -19,10 +19,17 @@
 
 namespace stipple::render::bdpt {
 
+// x_0's densities from the light side, by area (pOrigin) and by the s = 1 connection's sampling from x_1
+// (pConnect), zeros read as 1: the same for every strategy with s >= 2 of one light subpath, so computed once.
+struct LightStart {
+    double pOrigin = 1, pConnect = 1;
+};
+
 struct ConnectionVertices {
     const PathVertex* freshLight = nullptr;  // s = 1: the fresh light sample replacing lightPath[0]
     const PathVertex* freshCamera = nullptr; // t = 1: the lens point sampled towards the light vertex
     const Link* link = nullptr;              // s >= 1: the connection x_{s-1} -- x_s (fresh vertices included)
+    const LightStart* lightStart = nullptr;  // s >= 2: lightStart(lightPath), else computed per call
 };
 
 class MisWeights {
@@ -32,8 +39,14 @@ public:
     // scratch space (no allocation per call once warm).
     float weight(const std::vector<PathVertex>& lightPath, const std::vector<PathVertex>& cameraPath, int s, int t,
                  const ConnectionVertices& fresh) const;
+    // x_0's densities for a light subpath of at least two vertices.
+    LightStart lightStart(const std::vector<PathVertex>& lightPath) const {
+        return start(lightPath[0], lightPath[1]);
+    }
 
 private:
+    LightStart start(const PathVertex& x0, const PathVertex& x1) const;
+
     const PathEvaluator& eval_;
 };
 

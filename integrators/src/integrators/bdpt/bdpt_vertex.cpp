@@ -9,23 +9,6 @@ namespace {
 inline Vec3 direction(const PathVertex& from, const PathVertex& to) { return normalize(to.p - from.p); }
 } // namespace
 
-float PathEvaluator::toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to) {
-    Vec3 d = to.p - from.p;
-    float dist2 = lengthSquared(d);
-    if (dist2 == 0) return 0;
-    // Every vertex kind has a normal (the lens's is the camera's forward), so one formula covers them all.
-    return pdfSolidAngle * absDot(to.n, d) / (dist2 * std::sqrt(dist2));
-}
-
-float PathEvaluator::geometry(const PathVertex& a, const PathVertex& b) {
-    Vec3 d = b.p - a.p;
-    float dist2 = lengthSquared(d);
-    if (dist2 == 0) return 0;
-    float inv = 1 / std::sqrt(dist2);
-    // Shading normals for the cosines (with the adjoint correction in f this is Veach's 5.3 form).
-    return absDot(a.ns, d) * inv * absDot(b.ns, d) * inv / dist2;
-}
-
 Link::Link(const PathVertex& y_, const PathVertex& z_) : y(y_), z(z_), yz(direction(y_, z_)), zy(direction(z_, y_)) {
     if (y.kind == VertexKind::Surface) yzLocal = y.frame.toLocal(yz);
     if (z.kind == VertexKind::Surface) zyLocal = z.frame.toLocal(zy);

@@ -60,9 +60,22 @@ public:
     const Camera& camera() const { return camera_; }
 
     // The one conversion: a solid-angle density at `from` towards `to` into an area density at `to`.
-    static float toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to);
+    static float toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to) {
+        Vec3 d = to.p - from.p;
+        float dist2 = lengthSquared(d);
+        if (dist2 == 0) return 0;
+        // Every vertex kind has a normal (the lens's is the camera's forward), so one formula covers them all.
+        return pdfSolidAngle * absDot(to.n, d) / (dist2 * std::sqrt(dist2));
+    }
     // |cos| at both ends over the squared distance (no visibility).
-    static float geometry(const PathVertex& a, const PathVertex& b);
+    static float geometry(const PathVertex& a, const PathVertex& b) {
+        Vec3 d = b.p - a.p;
+        float dist2 = lengthSquared(d);
+        if (dist2 == 0) return 0;
+        float inv = 1 / std::sqrt(dist2);
+        // Shading normals for the cosines (with the adjoint correction in f this is Veach's 5.3 form).
+        return absDot(a.ns, d) * inv * absDot(b.ns, d) * inv / dist2;
+    }
 
     // Area density at `next` of sampling it from `cur` in the unit direction w (wLocal in cur's frame); a Surface
     // cur was reached from its previous vertex, an endpoint (camera, light start) from nowhere. A Surface cur with
