@@ -17,6 +17,8 @@
 #include "scene/scene_loader.h"
 #include "test_support.h"
 
+#include <optional>
+
 using namespace stipple::render;
 using namespace stipple::render::bdpt;
 using namespace stipple::render::test;
@@ -103,6 +105,7 @@ void split(const PathEvaluator& eval, const std::vector<PathVertex>& x, int sp, 
     for (std::vector<PathVertex>* p : {&light, &cam}) {
         std::vector<PathVertex>& v = *p;
         for (size_t i = 0; i < v.size(); ++i) {
+            if (v[i].kind == VertexKind::Surface) v[i].follow(v[i - 1]); // a Surface vertex is never first
             v[i].pdfFwd = i == 0 ? (p == &light ? eval.pdfLightOrigin(v[0]) : 0.0f)
                                  : eval.pdf(i >= 2 ? &v[i - 2] : nullptr, v[i - 1], v[i]);
             v[i].pdfRev = i + 2 < v.size() ? eval.pdf(&v[i + 2], v[i + 1], v[i]) : 0.0f;
@@ -129,6 +132,8 @@ void checkWeightsSumToOne(const std::string& file, uint32_t spp) {
                     ConnectionVertices fresh;
                     if (sp == 1) fresh.freshLight = &light[0];
                     if (n - sp == 1) fresh.freshCamera = &cam[0];
+                    std::optional<Link> link;
+                    if (sp >= 1) fresh.link = &link.emplace(light.back(), cam.back());
                     sum += fx.mis.weight(light, cam, sp, n - sp, fresh);
                 }
                 ++paths;

@@ -104,3 +104,56 @@ BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {
     const CheckOutcome missing = evaluateCheck(k, {m, rows, cells, slopes});
     BOOST_CHECK(missing.status == CheckStatus::Fail);
 }
+
+BOOST_AUTO_TEST_CASE(every_spp_pairs_each_seed_at_each_spp) {
+    // Seeds 1..3 at 16 and 64 spp. At 16 spp a costs 2x b, at 64 spp 1x: six pairs, geometric mean sqrt(2). A
+    // pairing across spp (a at 16 with b at 64, whose times differ 4x) would give other ratios and more pairs.
+    std::vector<ResultRow> rows;
+    for (uint32_t spp : {16u, 64u})
+        for (uint64_t seed = 1; seed <= 3; ++seed)
+            for (int side = 0; side < 2; ++side) {
+                ResultRow r;
+                r.scene = "s";
+                r.pattern = side ? "b" : "a";
+                r.spp = spp;
+                r.seed = seed;
+                const double b = spp == 16 ? 1.0 : 4.0;
+                r.cpuSeconds = r.renderSeconds = side ? b : (spp == 16 ? 2 * b : b) * (1 + 0.01 * double(seed));
+                rows.push_back(r);
+            }
+    const PairedRatio all = pairedTimeRatio(rows, "s", "a", "b", kAllSpp, TimeBasis::Cpu);
+    BOOST_CHECK_EQUAL(all.pairs, 6u);
+    BOOST_CHECK_CLOSE(all.ratio, std::sqrt(2.0) * std::cbrt(1.01 * 1.02 * 1.03), 1e-9);
+    const PairedRatio at64 = pairedTimeRatio(rows, "s", "a", "b", 64, TimeBasis::Cpu);
+    BOOST_CHECK_EQUAL(at64.pairs, 3u);
+    BOOST_CHECK_CLOSE(at64.ratio, std::cbrt(1.01 * 1.02 * 1.03), 1e-9);
+
+    // The check reads spp: all, and refuses a word that is neither all nor one of the matrix's spp.
+    Matrix m;
+    MatrixScene scene;
+    scene.name = "s";
+    scene.file = scene.path = "s.yaml";
+    m.scenes.push_back(scene);
+    m.patterns = {"a", "b"};
+    m.spp = {16, 64};
+    const MatrixVocabulary vocabulary{{"a", "b"}, {}};
+    const Check k = parseCheck("{ type: time_ratio, numerator: a, denominator: b, max: 1.5, spp: all }", "check.yaml",
+                               m, vocabulary);
+    const std::vector<CellAggregate> cells;
+    const std::vector<SlopeFit> slopes;
+    const CheckOutcome o = evaluateCheck(k, {m, rows, cells, slopes});
+    BOOST_TEST_MESSAGE(formatOutcome(o));
+    BOOST_CHECK(formatOutcome(o).find("every spp") != std::string::npos);
+    BOOST_CHECK(formatOutcome(o).find("6 pairs") != std::string::npos);
+    // ratio 1.44, 95% interval 0.98-2.13 (the two spp disagree): it straddles max 1.5.
+    BOOST_CHECK(o.status == CheckStatus::NotSeparated);
+    try {
+        parseCheck("{ type: time_ratio, numerator: a, denominator: b, max: 1.5, spp: every }", "check.yaml", m,
+                   vocabulary);
+        BOOST_ERROR("spp: every was accepted");
+    } catch (const std::exception& e) {
+        BOOST_TEST_MESSAGE(e.what());
+        BOOST_CHECK(std::string(e.what()).find("check.yaml") != std::string::npos);
+        BOOST_CHECK(std::string(e.what()).find("spp") != std::string::npos);
+    }
+}

@@ -2,7 +2,7 @@
 // Copyright 2026 The stipple authors
 // The time_ratio check: one pattern's render cost over another's, in thread CPU seconds paired seed by seed
 // (timing.h), at most a bound (max) or equal within a margin (two one-sided tests), with the wall-clock ratio
-// beside.
+// beside. spp: all pairs every spp's cells of a seed, for more pairs than the seeds alone give.
 #include "matrix/check_kind.h"
 #include "claims/checks.h"
 #include "base/text.h"
@@ -18,7 +18,7 @@ struct TimeRatio : CheckParams {
     std::string numerator, denominator;
     std::optional<double> max;                       // a bound: ratio ≤ max
     std::optional<std::pair<double, double>> margin; // or an equivalence: ratio within [lo, hi]
-    uint32_t spp = 0;
+    uint32_t spp = 0; // kAllSpp: every spp of the matrix
 };
 
 template <class T>
@@ -38,9 +38,10 @@ void evaluate(const Check& check, const CheckInputs& in, CheckOutcome& o) {
     auto verdict = [&](const PairedRatio& r) {
         return k.margin ? equivalenceVerdict(r, k.margin->first, k.margin->second) : ratioVerdict(r, *k.max);
     };
-    o.claim = fmt("time_ratio %s @ %u spp: %s / %s %s in thread CPU seconds (geometric mean of paired "
+    const std::string at = k.spp == kAllSpp ? std::string("every spp") : fmt("%u spp", k.spp);
+    o.claim = fmt("time_ratio %s @ %s: %s / %s %s in thread CPU seconds (geometric mean of paired "
                   "per-seed ratios, t intervals; wall seconds beside)",
-                  check.scene.c_str(), k.spp, k.numerator.c_str(), k.denominator.c_str(), bound.c_str());
+                  check.scene.c_str(), at.c_str(), k.numerator.c_str(), k.denominator.c_str(), bound.c_str());
     bool any = false;
     for (const MatrixScene* s : scenesOf(check, in.matrix)) {
         any = true;
@@ -100,7 +101,18 @@ const CheckKind kTimeRatioCheck{
                     return std::optional<std::pair<double, double>>(readMargin(r, n, c));
                 },
                 {}, spellOptional<std::pair<double, double>>),
-            sppKey(&TimeRatio::spp),
+            // spp: one of the matrix's, or all (each seed's cells paired at every spp); absent: the largest.
+            optionalKey<uint32_t>(
+                "spp", param(&TimeRatio::spp),
+                [](const CheckReader& r, const yaml::Node& n, const Check&) {
+                    if (n.IsScalar() && n.ScalarView() == "all") return kAllSpp;
+                    const std::string_view text = n.ScalarView();
+                    if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos)
+                        r.fail(n, "spp must be one of the matrix's spp or all, got '" + std::string(text) + "'");
+                    return r.spp(n, "spp");
+                },
+                [](const CheckReader& r, const Check&) { return r.matrix.spp.back(); },
+                [](const uint32_t& spp) { return spp == kAllSpp ? Json("all") : Json(spp); }),
             // An interval straddling the bound says the run could not tell, not that the claim is false.
             notSeparatedKey(false),
         },

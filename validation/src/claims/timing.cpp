@@ -24,9 +24,11 @@ PairedRatio pairedTimeRatio(const std::vector<ResultRow>& rows, const std::strin
     // ratio and its inverse are symmetric.
     std::vector<double> logRatios;
     for (const auto& a : rows) {
-        if (a.scene != scene || a.pattern != numerator || a.spp != spp || !(seconds(a, basis) > 0)) continue;
+        if (a.scene != scene || a.pattern != numerator || (spp != kAllSpp && a.spp != spp) ||
+            !(seconds(a, basis) > 0))
+            continue;
         for (const auto& b : rows)
-            if (b.scene == scene && b.pattern == denominator && b.spp == spp && b.seed == a.seed &&
+            if (b.scene == scene && b.pattern == denominator && b.spp == a.spp && b.seed == a.seed &&
                 seconds(b, basis) > 0)
                 logRatios.push_back(std::log(seconds(a, basis) / seconds(b, basis)));
     }

@@ -20,14 +20,17 @@ namespace stipple::validation {
 enum class TimeBasis { Cpu, Wall };
 
 struct PairedRatio {
-    double ratio = 0;      // geometric mean of the per-seed ratios numerator / denominator
+    double ratio = 0;      // geometric mean of the paired ratios numerator / denominator
     double lo = 0, hi = 0; // its 95% interval (exp of the t interval of the mean log ratio)
     double lo90 = 0, hi90 = 0; // its 90% interval (equivalence: two one-sided tests at 5%)
     size_t pairs = 0;
 };
 
-// Pairs the rows of one seed; NaN interval bounds with fewer than two pairs. Rows without a positive time on
-// the chosen basis are left out.
+// spp for "every spp of the matrix": each (seed, spp) group gives its own pair.
+constexpr uint32_t kAllSpp = 0;
+
+// Pairs the rows of one seed at `spp` (kAllSpp: of one seed at each spp); NaN interval bounds with fewer than two
+// pairs. Rows without a positive time on the chosen basis are left out.
 PairedRatio pairedTimeRatio(const std::vector<ResultRow>& rows, const std::string& scene, const std::string& numerator,
                             const std::string& denominator, uint32_t spp, TimeBasis basis);
 

@@ -41,9 +41,7 @@ void SubpathGenerator::pushSurface(const SurfaceHit& hit, const Spectrum& beta, 
     v.beta = beta;
     v.delta = hit.material->isSpecular();
     v.pdfFwd = PathEvaluator::toArea(pdfDir, path.back(), v);
-    v.frame = Frame(v.ns);
-    v.wPrev = normalize(path.back().p - v.p);
-    v.wPrevLocal = v.frame.toLocal(v.wPrev);
+    v.follow(path.back());
     path.push_back(v);
 }
 

@@ -9,6 +9,12 @@ namespace {
 inline Vec3 direction(const PathVertex& from, const PathVertex& to) { return normalize(to.p - from.p); }
 } // namespace
 
+void PathVertex::follow(const PathVertex& prev) {
+    frame = Frame(ns);
+    wPrev = direction(*this, prev);
+    wPrevLocal = frame.toLocal(wPrev);
+}
+
 Link::Link(const PathVertex& y_, const PathVertex& z_) : y(y_), z(z_), yz(direction(y_, z_)), zy(direction(z_, y_)) {
     if (y.kind == VertexKind::Surface) yzLocal = y.frame.toLocal(yz);
     if (z.kind == VertexKind::Surface) zyLocal = z.frame.toLocal(zy);
@@ -31,6 +37,14 @@ float PathEvaluator::pdfOnward(const PathVertex& cur, const Vec3& w, const Vec3&
     case VertexKind::Surface: return toArea(cur.material->pdf(cur.wPrevLocal, wLocal), cur, next);
     }
     return 0;
+}
+
+float PathEvaluator::pdf(const PathVertex* prev, const PathVertex& cur, const PathVertex& next) const {
+    const Vec3 w = direction(cur, next);
+    if (cur.kind != VertexKind::Surface) return pdfOnward(cur, w, Vec3(), next);
+    if (!prev) return 0;
+    const Frame frame(cur.ns);
+    return toArea(cur.material->pdf(frame.toLocal(direction(cur, *prev)), frame.toLocal(w)), cur, next);
 }
 
 float PathEvaluator::pdfBackward(const PathVertex& cur, const Vec3& wLocal, const PathVertex& prev) {

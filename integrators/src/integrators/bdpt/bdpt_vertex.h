@@ -33,6 +33,8 @@ struct PathVertex {
     // (world and local), fixed by the walk and read by every connection and MIS weight that ends here.
     Frame frame;
     Vec3 wPrev, wPrevLocal;
+    // Sets frame, wPrev and wPrevLocal of this Surface vertex, which follows `prev` on its subpath.
+    void follow(const PathVertex& prev);
 };
 
 // The connection of one strategy: y = x_{s-1} (light side) and z = x_s (camera side), with the unit directions
@@ -77,6 +79,10 @@ public:
         return absDot(a.ns, d) * inv * absDot(b.ns, d) * inv / dist2;
     }
 
+    // Area density at `next` of sampling it from `cur`, which was reached from `prev` (null when cur is an
+    // endpoint), computed afresh from the three positions (the walks and the MIS weights use the directions
+    // their vertices keep, below; this is the independent form the tests compare them with).
+    float pdf(const PathVertex* prev, const PathVertex& cur, const PathVertex& next) const;
     // Area density at `next` of sampling it from `cur` in the unit direction w (wLocal in cur's frame); a Surface
     // cur was reached from its previous vertex, an endpoint (camera, light start) from nowhere. A Surface cur with
     // a delta BSDF gives 0 (MIS treats that specially).
