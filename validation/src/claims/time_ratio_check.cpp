@@ -18,7 +18,7 @@ struct TimeRatio : CheckParams {
     std::string numerator, denominator;
     std::optional<double> max;                       // a bound: ratio ≤ max
     std::optional<std::pair<double, double>> margin; // or an equivalence: ratio within [lo, hi]
-    uint32_t spp = 0; // kAllSpp: every spp of the matrix
+    uint32_t spp = 0;                                // kAllSpp: every spp of the matrix
 };
 
 template <class T>
@@ -46,8 +46,7 @@ void evaluate(const Check& check, const CheckInputs& in, CheckOutcome& o) {
     for (const MatrixScene* s : scenesOf(check, in.matrix)) {
         any = true;
         const PairedRatio cpu = pairedTimeRatio(in.rows, s->name, k.numerator, k.denominator, k.spp, TimeBasis::Cpu);
-        const PairedRatio wall =
-            pairedTimeRatio(in.rows, s->name, k.numerator, k.denominator, k.spp, TimeBasis::Wall);
+        const PairedRatio wall = pairedTimeRatio(in.rows, s->name, k.numerator, k.denominator, k.spp, TimeBasis::Wall);
         if (cpu.pairs == 0) {
             o.status = CheckStatus::Fail;
             o.figures.push_back(fmt("%s: cells missing (no paired rows with CPU seconds)", s->name.c_str()));
@@ -80,8 +79,9 @@ const CheckKind kTimeRatioCheck{
     .keys =
         {
             sceneKey(false),
-            requiredKey<std::string>("numerator", param(&TimeRatio::numerator),
-                                     [](const CheckReader& r, const yaml::Node& n, const Check&) { return r.pattern(n); }),
+            requiredKey<std::string>(
+                "numerator", param(&TimeRatio::numerator),
+                [](const CheckReader& r, const yaml::Node& n, const Check&) { return r.pattern(n); }),
             requiredKey<std::string>("denominator", param(&TimeRatio::denominator),
                                      [](const CheckReader& r, const yaml::Node& n, const Check& c) {
                                          const std::string p = r.pattern(n);

@@ -12,7 +12,6 @@ namespace stipple::validation {
 
 namespace {
 
-
 double seconds(const ResultRow& r, TimeBasis basis) { return basis == TimeBasis::Cpu ? r.cpuSeconds : r.renderSeconds; }
 
 } // namespace
@@ -24,8 +23,7 @@ PairedRatio pairedTimeRatio(const std::vector<ResultRow>& rows, const std::strin
     // ratio and its inverse are symmetric.
     std::vector<double> logRatios;
     for (const auto& a : rows) {
-        if (a.scene != scene || a.pattern != numerator || (spp != kAllSpp && a.spp != spp) ||
-            !(seconds(a, basis) > 0))
+        if (a.scene != scene || a.pattern != numerator || (spp != kAllSpp && a.spp != spp) || !(seconds(a, basis) > 0))
             continue;
         for (const auto& b : rows)
             if (b.scene == scene && b.pattern == denominator && b.spp == a.spp && b.seed == a.seed &&

@@ -26,7 +26,8 @@ float MisWeights::weight(const std::vector<PathVertex>& lightPath, const std::ve
     double* fromLight = sc.fromLight.data();
     double* fromCamera = sc.fromCamera.data();
     for (int j = 0; j < s; ++j) x[j] = (s == 1 && fresh.freshLight) ? fresh.freshLight : &lightPath[size_t(j)];
-    for (int j = s; j < n; ++j) x[j] = (t == 1 && fresh.freshCamera) ? fresh.freshCamera : &cameraPath[size_t(n - 1 - j)];
+    for (int j = s; j < n; ++j)
+        x[j] = (t == 1 && fresh.freshCamera) ? fresh.freshCamera : &cameraPath[size_t(n - 1 - j)];
 
     // Densities fixed by each subpath's own walk.
     for (int j = 0; j < s; ++j) {

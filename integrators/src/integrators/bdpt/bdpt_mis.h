@@ -40,9 +40,7 @@ public:
     float weight(const std::vector<PathVertex>& lightPath, const std::vector<PathVertex>& cameraPath, int s, int t,
                  const ConnectionVertices& fresh) const;
     // x_0's densities for a light subpath of at least two vertices.
-    LightStart lightStart(const std::vector<PathVertex>& lightPath) const {
-        return start(lightPath[0], lightPath[1]);
-    }
+    LightStart lightStart(const std::vector<PathVertex>& lightPath) const { return start(lightPath[0], lightPath[1]); }
 
 private:
     LightStart start(const PathVertex& x0, const PathVertex& x1) const;

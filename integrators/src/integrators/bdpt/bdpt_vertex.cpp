@@ -20,8 +20,7 @@ Link::Link(const PathVertex& y_, const PathVertex& z_) : y(y_), z(z_), yz(direct
     if (z.kind == VertexKind::Surface) zyLocal = z.frame.toLocal(zy);
 }
 
-float PathEvaluator::pdfOnward(const PathVertex& cur, const Vec3& w, const Vec3& wLocal,
-                               const PathVertex& next) const {
+float PathEvaluator::pdfOnward(const PathVertex& cur, const Vec3& w, const Vec3& wLocal, const PathVertex& next) const {
     switch (cur.kind) {
     case VertexKind::Camera: {
         float pdfPos, pdfDir;
