@@ -28,6 +28,12 @@ PowerSpectrum::PowerSpectrum(int dim, int maxFrequency, int annulusWidth)
 }
 
 void PowerSpectrum::add(const float* points, uint32_t n) {
+    std::vector<double> values(frequencies());
+    periodogram(points, n, values.data());
+    addPeriodogram(values.data(), 1.0);
+}
+
+void PowerSpectrum::periodogram(const float* points, uint32_t n, double* out) const {
     const int W = 2 * K_ + 1;
     std::vector<std::complex<double>> phase(size_t(dim_) * W); // exp(-2 pi i k x) per axis, k = -K..K
     std::vector<std::complex<double>> sum(radius_.size());
@@ -51,8 +57,12 @@ void PowerSpectrum::add(const float* points, uint32_t n) {
             sum[f] += e;
         }
     }
-    for (size_t f = 0; f < sum.size(); ++f) sum_[f] += std::norm(sum[f]) / n;
-    ++sets_;
+    for (size_t f = 0; f < sum.size(); ++f) out[f] = std::norm(sum[f]) / n;
+}
+
+void PowerSpectrum::addPeriodogram(const double* values, double weight) {
+    for (size_t f = 0; f < sum_.size(); ++f) sum_[f] += weight * values[f];
+    weight_ += weight;
 }
 
 std::vector<PowerSpectrum::Annulus> PowerSpectrum::annuli() const {
@@ -60,7 +70,7 @@ std::vector<PowerSpectrum::Annulus> PowerSpectrum::annuli() const {
     std::vector<double> s(size_t(annuli) + 1, 0.0), s2(size_t(annuli) + 1, 0.0);
     std::vector<int> count(size_t(annuli) + 1, 0);
     for (size_t f = 0; f < sum_.size(); ++f) {
-        const double p = sum_[f] / std::max(sets_, 1);
+        const double p = sum_[f] / std::max(weight_, 1.0);
         s[size_t(radius_[f])] += p;
         s2[size_t(radius_[f])] += p * p;
         ++count[size_t(radius_[f])];
@@ -97,17 +107,16 @@ double PowerSpectrum::rapsPeak() const {
 
 double PowerSpectrum::largestPeak() const {
     double best = 0.0;
-    for (double v : sum_) best = std::max(best, v / std::max(sets_, 1));
+    for (double v : sum_) best = std::max(best, v / std::max(weight_, 1.0));
     return best;
 }
 
-} // namespace stipple::detail::pointsets
-
-namespace stipple::detail::pointsets {
 double PowerSpectrum::largestPeakRadius() const {
     const size_t f = size_t(std::max_element(sum_.begin(), sum_.end()) - sum_.begin());
+    const int* k = frequencies_.data() + f * size_t(dim_);
     double r2 = 0;
-    for (int c = 0; c < dim_; ++c) r2 += double(frequencies_[f * size_t(dim_) + size_t(c)]) * frequencies_[f * size_t(dim_) + size_t(c)];
+    for (int c = 0; c < dim_; ++c) r2 += double(k[c]) * k[c];
     return std::sqrt(r2);
 }
+
 } // namespace stipple::detail::pointsets
