@@ -30,6 +30,17 @@ std::vector<ResultRow> pairs(const std::vector<double>& aCpu, const std::vector<
         }
     return rows;
 }
+// A matrix of scene "s" and patterns a and b at the given spp.
+Matrix matrixOf(std::vector<uint32_t> spp) {
+    Matrix m;
+    MatrixScene scene;
+    scene.name = "s";
+    scene.file = scene.path = "s.yaml";
+    m.scenes.push_back(scene);
+    m.patterns = {"a", "b"};
+    m.spp = std::move(spp);
+    return m;
+}
 } // namespace
 
 BOOST_AUTO_TEST_CASE(geometric_mean_and_t_interval) {
@@ -84,13 +95,7 @@ BOOST_AUTO_TEST_CASE(check_judges_cpu_seconds_not_wall) {
     // A busy machine: wall seconds of pattern a inflated by 40-80% on the seeds where a hog ran beside it; the CPU
     // seconds are unchanged. The claim a / b ≤ 1.05 passes on CPU seconds; the wall ratio is shown beside.
     auto rows = pairs({1.00, 1.01, 0.99, 1.00}, {1, 1, 1, 1}, {1.4, 1.8, 1.0, 1.5}, {1, 1, 1, 1});
-    Matrix m;
-    MatrixScene scene;
-    scene.name = "s";
-    scene.file = scene.path = "s.yaml";
-    m.scenes.push_back(scene);
-    m.patterns = {"a", "b"};
-    m.spp = {64};
+    const Matrix m = matrixOf({64});
     const Check k = parseCheck("{ type: time_ratio, numerator: a, denominator: b, max: 1.05, spp: 64 }", "check.yaml", m,
                                MatrixVocabulary{{"a", "b"}, {}});
     const std::vector<CellAggregate> cells;
@@ -129,13 +134,7 @@ BOOST_AUTO_TEST_CASE(every_spp_pairs_each_seed_at_each_spp) {
     BOOST_CHECK_CLOSE(at64.ratio, std::cbrt(1.01 * 1.02 * 1.03), 1e-9);
 
     // The check reads spp: all, and refuses a word that is neither all nor one of the matrix's spp.
-    Matrix m;
-    MatrixScene scene;
-    scene.name = "s";
-    scene.file = scene.path = "s.yaml";
-    m.scenes.push_back(scene);
-    m.patterns = {"a", "b"};
-    m.spp = {16, 64};
+    const Matrix m = matrixOf({16, 64});
     const MatrixVocabulary vocabulary{{"a", "b"}, {}};
     const Check k = parseCheck("{ type: time_ratio, numerator: a, denominator: b, max: 1.5, spp: all }", "check.yaml",
                                m, vocabulary);
