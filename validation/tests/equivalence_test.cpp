@@ -272,6 +272,23 @@ BOOST_AUTO_TEST_CASE(expectations_judge_the_verdicts) {
     BOOST_TEST(checkStatusName(statusFor(Expectation::Any, better)) == std::string(checkStatusName(CheckStatus::Pass)));
 }
 
+BOOST_AUTO_TEST_CASE(the_deciding_verdict_names_what_decided_the_row) {
+    // 0.95x with a tight interval: inside the margin (EQUIVALENT) and separated from 1. A check expecting better
+    // counts it as a gain, so its words say BETTER; one expecting equivalence says EQUIVALENT; 1.02x, not separated
+    // from 1, stays EQUIVALENT (and refutes an expected gain).
+    const Comparison gain = judgeLogRatio(std::log(0.95), 1e-4, 50, Margin{}); // log-ratio sd 0.01
+    const Comparison same = judgeLogRatio(std::log(1.02), 4e-4, 50, Margin{}); // sd 0.02
+    BOOST_TEST(verdictName(gain.verdict) == std::string("EQUIVALENT"));
+    BOOST_TEST(gain.hi95 < 1);
+    BOOST_TEST(checkStatusName(statusFor(Expectation::Better, gain)) == std::string("PASS"));
+    BOOST_TEST(verdictName(decidingVerdict(Expectation::Better, gain)) == std::string("BETTER"));
+    BOOST_TEST(verdictName(decidingVerdict(Expectation::Equivalent, gain)) == std::string("EQUIVALENT"));
+    BOOST_TEST(verdictName(decidingVerdict(Expectation::Any, gain)) == std::string("EQUIVALENT"));
+    BOOST_TEST(verdictName(decidingVerdict(Expectation::Worse, gain)) == std::string("EQUIVALENT"));
+    BOOST_TEST(verdictName(decidingVerdict(Expectation::Better, same)) == std::string("EQUIVALENT"));
+    BOOST_TEST(checkStatusName(statusFor(Expectation::Better, same)) == std::string("FAIL"));
+}
+
 BOOST_AUTO_TEST_CASE(blue_noise_units_are_its_tiles) {
     BOOST_TEST(pixelsIndependent("stratified"));
     BOOST_TEST(!pixelsIndependent("sobol+blue-noise"));

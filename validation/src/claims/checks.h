@@ -3,6 +3,7 @@
 // Evaluates the matrix's claims against a run's results: PASS, FAIL or NOT SEPARATED, with the figures.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct VerdictRow {
     bool equalTime = false, flip = false;
     Comparison comparison;
     CheckStatus status = CheckStatus::Pass; // against the check's expectation
+    // The verdict that decided status, for the report's words, where it is not comparison.verdict: a gain inside
+    // the margin but separated from 1 is BETTER (WORSE) to a check that expects better (worse).
+    std::optional<Verdict> decidedAs;
 };
 
 struct CheckOutcome {

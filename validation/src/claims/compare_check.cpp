@@ -60,6 +60,7 @@ void evaluate(const Check& check, const CheckInputs& in, CheckOutcome& o) {
                     v.flip = k.flip;
                     v.comparison = comparePatterns(rows, s, v.a, v.b, k.spp, ri, k.flip, k.equalTime, margin);
                     v.status = statusFor(k.expect, v.comparison);
+                    v.decidedAs = decidingVerdict(k.expect, v.comparison);
                     // The plain MSE ratio beside, labelled and without a verdict word: what the weights and the cap
                     // changed. Only the main figure decides; a second word on the same line read as a second verdict.
                     std::string plainText;

@@ -123,6 +123,13 @@ CheckStatus statusFor(Expectation expect, const Comparison& c) {
     return CheckStatus::Fail;
 }
 
+Verdict decidingVerdict(Expectation expect, const Comparison& c) {
+    if (c.verdict == Verdict::Unmeasured) return c.verdict;
+    if (expect == Expectation::Better && c.hi95 < 1) return Verdict::Better;
+    if (expect == Expectation::Worse && c.lo95 > 1) return Verdict::Worse;
+    return c.verdict;
+}
+
 const char* expectationName(Expectation e) {
     switch (e) {
     case Expectation::Any: return "any";

@@ -42,6 +42,9 @@ Comparison comparePatterns(const std::vector<ResultRow>& rows, const MatrixScene
 enum class Expectation { Any, Equivalent, Better, Worse };
 
 CheckStatus statusFor(Expectation expect, const Comparison& c);
+// The verdict statusFor decided on, in the report's words: BETTER (WORSE) for a gain inside the margin that is
+// separated from 1 where better (worse) is expected, else the comparison's own verdict.
+Verdict decidingVerdict(Expectation expect, const Comparison& c);
 const char* expectationName(Expectation e);
 
 Json verdictsJson(const std::vector<VerdictRow>& verdicts);

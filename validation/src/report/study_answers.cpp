@@ -66,8 +66,8 @@ std::string ratioRange(std::vector<double> r) {
 // Where a verdict was measured: the scene, and its region when it is not the whole image.
 std::string placeOf(const VerdictRow& v) { return html(v.scene) + (v.region.empty() ? "" : ", " + html(v.region)); }
 
-// "worse than stratified in 4 of 4 scenes (7.2–17×)" or "… in veach-mis (1.3×)", one group per verdict word,
-// then whether the statement holds.
+// "worse than stratified in 4 of 4 scenes (7.2–17×)" or "… in veach-mis (1.3×)", one group per verdict word (the
+// one that decided the row against its check's expectation), then whether the statement holds.
 std::string verdictSummary(const std::vector<const VerdictRow*>& vs, const std::string& b, bool tagged) {
     const std::vector<Verdict> order = {Verdict::Equivalent, Verdict::Better, Verdict::Worse, Verdict::NotSeparated,
                                         Verdict::Unmeasured};
@@ -78,7 +78,7 @@ std::string verdictSummary(const std::vector<const VerdictRow*>& vs, const std::
         std::vector<double> ratios;
         std::vector<std::string> places;
         for (const VerdictRow* v : vs)
-            if (v->comparison.verdict == word) {
+            if (v->decidedAs.value_or(v->comparison.verdict) == word) {
                 ratios.push_back(v->comparison.ratio);
                 places.push_back(placeOf(*v));
             }
