@@ -42,7 +42,7 @@ float MisWeights::weight(const std::vector<PathVertex>& lightPath, const std::ve
     const PathVertex& xs = *x[s];
     if (s == 0) {
         fromLight[0] = eval_.pdfLightOrigin(xs);
-        if (n > 2) fromLight[1] = eval_.pdfLightEmission(xs, *x[1]);
+        if (n > 2) fromLight[1] = eval_.pdfLightEmission(xs, normalize(x[1]->p - xs.p), *x[1]);
     } else {
         const Link& link = *fresh.link;
         const PathVertex& xl = *x[s - 1];

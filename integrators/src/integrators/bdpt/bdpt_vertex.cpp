@@ -15,7 +15,7 @@ void PathVertex::follow(const PathVertex& prev) {
     wPrevLocal = frame.toLocal(wPrev);
 }
 
-Link::Link(const PathVertex& y_, const PathVertex& z_) : y(y_), z(z_), yz(direction(y_, z_)), zy(direction(z_, y_)) {
+Link::Link(const PathVertex& y, const PathVertex& z) : yz(direction(y, z)), zy(direction(z, y)) {
     if (y.kind == VertexKind::Surface) yzLocal = y.frame.toLocal(yz);
     if (z.kind == VertexKind::Surface) zyLocal = z.frame.toLocal(zy);
 }
@@ -27,12 +27,7 @@ float PathEvaluator::pdfOnward(const PathVertex& cur, const Vec3& w, const Vec3&
         camera_.pdfWe(Ray{cur.p, w}, pdfPos, pdfDir);
         return toArea(pdfDir, cur, next);
     }
-    case VertexKind::Light: {
-        if (cur.light < 0) return 0;
-        float pdfPos, pdfDir;
-        scene_.lights()[size_t(cur.light)].pdfLe(cur.n, w, pdfPos, pdfDir);
-        return toArea(pdfDir, cur, next);
-    }
+    case VertexKind::Light: return pdfLightEmission(cur, w, next);
     case VertexKind::Surface: return toArea(cur.material->pdf(cur.wPrevLocal, wLocal), cur, next);
     }
     return 0;
@@ -55,10 +50,10 @@ float PathEvaluator::pdfLightOrigin(const PathVertex& v) const {
     return scene_.lightChoicePmf(v.light) / scene_.lights()[size_t(v.light)].area();
 }
 
-float PathEvaluator::pdfLightEmission(const PathVertex& v, const PathVertex& next) const {
+float PathEvaluator::pdfLightEmission(const PathVertex& v, const Vec3& w, const PathVertex& next) const {
     if (v.light < 0) return 0;
     float pdfPos, pdfDir;
-    scene_.lights()[size_t(v.light)].pdfLe(v.n, direction(v, next), pdfPos, pdfDir);
+    scene_.lights()[size_t(v.light)].pdfLe(v.n, w, pdfPos, pdfDir);
     return toArea(pdfDir, v, next);
 }
 

@@ -41,8 +41,6 @@ struct PathVertex {
 // between them in world space and in each Surface end's frame. Computed once, it serves the contribution's BSDF
 // values and all four connection densities of its MIS weight.
 struct Link {
-    const PathVertex& y;
-    const PathVertex& z;
     Vec3 yz, zy;           // world: from y towards z, from z towards y
     Vec3 yzLocal, zyLocal; // yz in y's frame, zy in z's frame (Surface ends only)
     Link(const PathVertex& y, const PathVertex& z);
@@ -92,8 +90,9 @@ public:
     static float pdfBackward(const PathVertex& cur, const Vec3& wLocal, const PathVertex& prev);
     // Area density of choosing `v` as a light subpath start: light choice by power times 1 / area.
     float pdfLightOrigin(const PathVertex& v) const;
-    // Area density at `next` of the emission direction sampled at the light point `v` (Light or emissive Surface).
-    float pdfLightEmission(const PathVertex& v, const PathVertex& next) const;
+    // Area density at `next` of the emission direction w (unit, towards next) sampled at the light point `v`
+    // (Light or emissive Surface).
+    float pdfLightEmission(const PathVertex& v, const Vec3& w, const PathVertex& next) const;
     // Area density of `v` when drawn by the fresh light sample of the s = 1 strategy from `ref`.
     float pdfLightConnect(const PathVertex& v, const PathVertex& ref) const;
 
