@@ -42,9 +42,10 @@ def main(path):
           (" (medians of the repetitions)" if repeated else ""))
     print(f"{'call':<11}{'arity':>6}{'N':>6}  {'independent ns':>15}" +
           "".join(f"  {p + ' ns (x)':>20}" for p in SHOWN))
+    sizes = sorted({key[3] for key in ns})
     for call in ("FillPixel", "Sample", "Stream", "StreamFill"):
         for arity in (1, 2, 3):
-            for n in (16, 256, 4096):
+            for n in sizes:
                 base = ns.get((call, "independent", arity, n))
                 if base is None:
                     continue

@@ -210,10 +210,11 @@ uint32_t acceptedFlags(uint32_t pattern) {
     return stipple_pattern_get_limits(pattern, &limits) == STIPPLE_OK ? limits.flags : 0;
 }
 
+// N = 100 besides the powers of two: the sizes whose grids and sequences are not the power-of-two ones.
 void fillArguments(benchmark::internal::Benchmark* b) {
     for (int64_t pattern = 0; pattern < int64_t(libraryPatternCount()); ++pattern)
         for (int64_t arity = 1; arity <= 3; ++arity)
-            for (int64_t n : {16, 256, 4096}) b->Args({pattern, arity, n});
+            for (int64_t n : {16, 100, 256, 4096}) b->Args({pattern, arity, n});
 }
 
 // The patterns whose limits accept the blue-noise flag, plain (0) and flagged (1) next to each other.

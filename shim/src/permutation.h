@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The stipple authors
-// permutation.h — a hashed permutation of [0, length) evaluated one element at a time.
+// permutation.h — a hashed permutation of [0, length) evaluated one element at a time, or a run of them at once.
 //
 // Kensler, "Correlated Multi-Jittered Sampling" (Pixar Technical Memo 13-01, 2013): a bijective hash on the
 // next power of two, cycle-walked into [0, length). O(1) expected per element (< 2 rounds on average), no
@@ -11,34 +11,72 @@
 
 namespace stipple::detail {
 
-constexpr uint32_t permuteIndex(uint32_t i, uint32_t length, uint32_t p) {
+// The smallest all-ones mask covering [0, length): the domain of the bijection the cycle walk runs in.
+constexpr uint32_t permutationMask(uint32_t length) {
     uint32_t w = length - 1;
     w |= w >> 1;
     w |= w >> 2;
     w |= w >> 4;
     w |= w >> 8;
     w |= w >> 16;
-    do {
-        i ^= p;
-        i *= 0xe170893du;
-        i ^= p >> 16;
-        i ^= (i & w) >> 4;
-        i ^= p >> 8;
-        i *= 0x0929eb3fu;
-        i ^= p >> 23;
-        i ^= (i & w) >> 1;
-        i *= 1u | p >> 27;
-        i *= 0x6935fa69u;
-        i ^= (i & w) >> 11;
-        i *= 0x74dcb303u;
-        i ^= (i & w) >> 2;
-        i *= 0x9e501cc3u;
-        i ^= (i & w) >> 2;
-        i *= 0xc860a3dfu;
-        i &= w;
-        i ^= i >> 5;
-    } while (i >= length);
+    return w;
+}
+
+// One step of the cycle walk: Kensler's bijection of [0, w] keyed by p.
+[[gnu::always_inline]] constexpr uint32_t permutationStep(uint32_t i, uint32_t w, uint32_t p) {
+    i ^= p;
+    i *= 0xe170893du;
+    i ^= p >> 16;
+    i ^= (i & w) >> 4;
+    i ^= p >> 8;
+    i *= 0x0929eb3fu;
+    i ^= p >> 23;
+    i ^= (i & w) >> 1;
+    i *= 1u | p >> 27;
+    i *= 0x6935fa69u;
+    i ^= (i & w) >> 11;
+    i *= 0x74dcb303u;
+    i ^= (i & w) >> 2;
+    i *= 0x9e501cc3u;
+    i ^= (i & w) >> 2;
+    i *= 0xc860a3dfu;
+    i &= w;
+    i ^= i >> 5;
+    return i;
+}
+
+constexpr uint32_t permuteIndex(uint32_t i, uint32_t length, uint32_t p) {
+    const uint32_t w = permutationMask(length);
+    do i = permutationStep(i, w, p);
+    while (i >= length);
     return static_cast<uint32_t>((uint64_t(i) + p) % length);
+}
+
+// permuteIndex of every values[k] in place (length <= 2^31), for the batch paths. One element's walk takes a
+// random number of steps, a branch the processor mispredicts about every other element; here each pass steps
+// every element still outside [0, length), until none is, so the loops have no branch per element and vectorise.
+// The final offset is a subtraction: (i + p) mod length = (i + p mod length) mod length, and i + p mod length is
+// below 2 length.
+[[gnu::always_inline]] inline void permuteIndices(uint32_t* values, uint32_t count, uint32_t length, uint32_t p) {
+    const uint32_t w = permutationMask(length);
+    uint32_t outside = 0;
+    for (uint32_t k = 0; k < count; ++k) {
+        values[k] = permutationStep(values[k], w, p);
+        outside |= static_cast<uint32_t>(values[k] >= length);
+    }
+    while (outside) {
+        outside = 0;
+        for (uint32_t k = 0; k < count; ++k) {
+            const uint32_t v = values[k];
+            values[k] = v >= length ? permutationStep(v, w, p) : v;
+            outside |= static_cast<uint32_t>(values[k] >= length);
+        }
+    }
+    const uint32_t offset = p % length;
+    for (uint32_t k = 0; k < count; ++k) {
+        const uint32_t shifted = values[k] + offset;
+        values[k] = shifted >= length ? shifted - length : shifted;
+    }
 }
 
 } // namespace stipple::detail

@@ -3,7 +3,6 @@
 // strata_grid.cpp — choosing the grid of strata and locating the cell of each set point.
 #include "strata_grid.h"
 
-#include "permutation.h"
 #include "progressive_strata.h"
 
 #include <algorithm>
@@ -109,37 +108,6 @@ StrataGrid StrataGrid::choose(uint32_t arity, uint32_t points) {
     }
     if (grid.progressive && points <= kCellTableLimit) grid.cellTable = sharedCellTable(arity, grid.axisBits, points);
     return grid;
-}
-
-void StrataGrid::cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const {
-    uint32_t line, position;
-    if (emptyCells == 0) {
-        line = lineDivider.divide(q);
-        position = q - line * lineLength;
-    } else {
-        const uint32_t shortLength = lineLength - 1;
-        const uint64_t inShortLines = uint64_t(emptyCells) * shortLength;
-        uint32_t t;
-        if (q < inShortLines) {
-            t = shortLineDivider.divide(q);
-            position = q - t * shortLength;
-            const uint32_t hole = static_cast<uint32_t>((uint64_t(t) + holeOffset) % lineLength);
-            position += position >= hole ? 1 : 0;
-        } else {
-            const uint32_t rest = static_cast<uint32_t>(q - inShortLines);
-            const uint32_t lines = lineDivider.divide(rest);
-            t = emptyCells + lines;
-            position = rest - lines * lineLength;
-        }
-        line = permuteIndex(t, lineCount, lineSeed);
-    }
-    cell[arity - 1] = position;
-    if (arity == 2) {
-        cell[0] = line;
-    } else if (arity == 3) {
-        cell[1] = axis0Divider.divide(line);
-        cell[0] = line - cell[1] * axis[0];
-    }
 }
 
 } // namespace stipple::detail

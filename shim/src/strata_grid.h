@@ -15,6 +15,7 @@
 #pragma once
 
 #include "fast_divider.h"
+#include "permutation.h"
 
 #include <cstdint>
 #include <memory>
@@ -46,7 +47,52 @@ struct StrataGrid {
 
     // The cell of set point q (0 <= q < M), given the set's line permutation seed and empty-cell offset.
     // Set points are ordered line by line in permuted line order; the first s lines are the ones with a hole.
-    void cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const;
+    void cellOf(uint32_t q, uint32_t lineSeed, uint32_t holeOffset, uint32_t cell[3]) const {
+        uint32_t line, position;
+        linesOf(&q, 1, lineSeed, holeOffset, &line, &position);
+        splitLine(line, position, cell);
+    }
+
+    // cellOf for the set points q[0, n), as each one's line and position along it: a padded grid's line
+    // permutation is walked for all of them at once (permuteIndices), for the batch paths.
+    [[gnu::always_inline]] void linesOf(const uint32_t* q, uint32_t n, uint32_t lineSeed, uint32_t holeOffset,
+                                        uint32_t* line, uint32_t* position) const {
+        if (emptyCells == 0) {
+            for (uint32_t k = 0; k < n; ++k) {
+                line[k] = lineDivider.divide(q[k]);
+                position[k] = q[k] - line[k] * lineLength;
+            }
+            return;
+        }
+        const uint32_t shortLength = lineLength - 1;
+        const uint64_t inShortLines = uint64_t(emptyCells) * shortLength;
+        for (uint32_t k = 0; k < n; ++k) {
+            if (q[k] < inShortLines) {
+                const uint32_t t = shortLineDivider.divide(q[k]);
+                const uint32_t hole = (t + holeOffset) % lineLength; // t < s and holeOffset < L: no overflow
+                position[k] = q[k] - t * shortLength;
+                position[k] += position[k] >= hole ? 1 : 0;
+                line[k] = t;
+            } else {
+                const uint32_t rest = static_cast<uint32_t>(q[k] - inShortLines);
+                const uint32_t lines = lineDivider.divide(rest);
+                line[k] = emptyCells + lines;
+                position[k] = rest - lines * lineLength;
+            }
+        }
+        permuteIndices(line, n, lineCount, lineSeed);
+    }
+
+    // A cell's coordinates from its line and its position along the line (the last axis).
+    [[gnu::always_inline]] void splitLine(uint32_t line, uint32_t position, uint32_t cell[3]) const {
+        cell[arity - 1] = position;
+        if (arity == 2) {
+            cell[0] = line;
+        } else if (arity == 3) {
+            cell[1] = axis0Divider.divide(line);
+            cell[0] = line - cell[1] * axis[0];
+        }
+    }
 };
 
 } // namespace stipple::detail
