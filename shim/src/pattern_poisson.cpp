@@ -124,9 +124,18 @@ template <uint32_t Arity>
     while (p < end) {
         const uint32_t base = p < 2 ? 0 : std::bit_floor(p);
         const uint32_t layerEnd = std::min(end, p < 2 ? 2u : 2 * base);
-        if (p >= 2 && points - base < base) { // a clipped last layer
-            for (; p < layerEnd; ++p)
-                copy(stored + size_t(layeredIndex(p, points, map.orderSeed)) * Arity, out + size_t(p - first) * Arity);
+        if (p >= 2 && points - base < base) {
+            // A clipped last layer (layeredIndex's permutation), its walk done 64 points at a time (no branch per
+            // point).
+            alignas(64) uint32_t index[64];
+            while (p < layerEnd) {
+                const uint32_t n = std::min(64u, layerEnd - p);
+                for (uint32_t k = 0; k < n; ++k) index[k] = p + k - base;
+                permuteIndicesFast(index, n, points - base, map.orderSeed ^ base);
+                for (uint32_t k = 0; k < n; ++k)
+                    copy(stored + size_t(base + index[k]) * Arity, out + size_t(p + k - first) * Arity);
+                p += n;
+            }
             continue;
         }
         const uint32_t mask = p < 2 ? 0 : (map.orderSeed & (base - 1));

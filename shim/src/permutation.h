@@ -86,15 +86,11 @@ namespace stipple::detail {
 // A cheaper hashed permutation of [0, length) for the per-value paths: a bijection on the next power of two
 // (xor-shift and odd-multiply rounds, each invertible mod 2^k), cycle-walked into [0, length); no division.
 // For a power-of-two length it is a single pass.
-constexpr uint32_t permuteIndexFast(uint32_t i, uint32_t length, uint32_t seed) {
-    uint32_t w = length - 1;
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
-    const uint32_t half = (32 - static_cast<uint32_t>(__builtin_clz(w | 1))) / 2 + 1;
-    do {
+struct FastPermutation {
+    uint32_t w, half, seed;
+    constexpr FastPermutation(uint32_t length, uint32_t s)
+        : w(permutationMask(length)), half((32 - static_cast<uint32_t>(__builtin_clz(w | 1))) / 2 + 1), seed(s) {}
+    [[gnu::always_inline]] constexpr uint32_t step(uint32_t i) const {
         i = (i ^ seed) & w;
         i = (i * (seed | 1u)) & w;
         i ^= i >> half;
@@ -102,8 +98,35 @@ constexpr uint32_t permuteIndexFast(uint32_t i, uint32_t length, uint32_t seed) 
         i ^= (i >> 3) ^ (seed >> 16 & w);
         i = (i * 0x297a2d39u) & w;
         i ^= i >> half;
-    } while (i >= length);
+        return i;
+    }
+};
+
+constexpr uint32_t permuteIndexFast(uint32_t i, uint32_t length, uint32_t seed) {
+    const FastPermutation permutation(length, seed);
+    do i = permutation.step(i);
+    while (i >= length);
     return i;
+}
+
+// permuteIndexFast of every values[k] in place, walked as permuteIndices walks: each pass steps every element still
+// outside [0, length), so the loops have no branch per element and vectorise.
+[[gnu::always_inline]] inline void permuteIndicesFast(uint32_t* values, uint32_t count, uint32_t length,
+                                                      uint32_t seed) {
+    const FastPermutation permutation(length, seed);
+    uint32_t outside = 0;
+    for (uint32_t k = 0; k < count; ++k) {
+        values[k] = permutation.step(values[k]);
+        outside |= static_cast<uint32_t>(values[k] >= length);
+    }
+    while (outside) {
+        outside = 0;
+        for (uint32_t k = 0; k < count; ++k) {
+            const uint32_t v = values[k];
+            values[k] = v >= length ? permutation.step(v) : v;
+            outside |= static_cast<uint32_t>(values[k] >= length);
+        }
+    }
 }
 
 } // namespace stipple::detail
