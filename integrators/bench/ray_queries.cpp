@@ -37,8 +37,9 @@ constexpr int kBundle = RenderScene::kPacketSize;
 
 // Rays in bundles of at most kBundle (one pixel's, those still alive), as a lock-step renderer would trace them.
 struct RaySet {
-    const char* name = "";
-    bool anyHit = false; // shadow rays: any hit
+    RaySet(const char* n, bool any) : name(n), anyHit(any) {}
+    const char* name;
+    bool anyHit; // shadow rays: any hit
     std::vector<Ray> rays;
     std::vector<size_t> bundleStart{0};
     void closeBundle() {
@@ -106,10 +107,7 @@ std::vector<RaySet> gatherRays(const RenderScene& scene, const Options& o) {
     PixelSampler sampler(ShimLibrary::get(o.shim), "independent", kBundle, 1, layout);
     PixelSamples samples(sampler);
 
-    std::vector<RaySet> sets(4);
-    for (auto [set, name] : {std::pair{0, "camera"}, {1, "bounce1"}, {2, "bounce2"}, {3, "shadow"}})
-        sets[size_t(set)].name = name;
-    sets[3].anyHit = true;
+    std::vector<RaySet> sets{{"camera", false}, {"bounce1", false}, {"bounce2", false}, {"shadow", true}};
     RaySet &cam = sets[0], &b1 = sets[1], &b2 = sets[2], &shadow = sets[3];
     for (int y = 0; y < desc.settings.height; y += o.stride) {
         for (int x = 0; x < desc.settings.width; x += o.stride) {
@@ -209,7 +207,9 @@ int main(int argc, char** argv) try {
             const double perPacket = double(set.rays.size()) / double(set.bundleStart.size() - 1);
             std::printf("%-14s %-8s %9zu %8.1f %12.1f %12.1f %9.2f\n", scene.description().name.c_str(), set.name,
                         set.rays.size(), perPacket, median(single), median(packet), median(ratio));
-            // Instanced hits may move in their last bits between the two kernels, never appear or vanish.
+            // Both kernels must find the same hits. Inside instances Embree's packet kernels may move a hit in its
+            // last bits (RenderScene::intersectPacket); a grazing ray could then hit in one and miss in the other,
+            // which the four scenes have not shown. The smoke test runs the Cornell box, without instances.
             if (singleHits != packetHits) {
                 std::fprintf(stderr, "stipple-ray-queries: %s, %s: %zu hits one at a time, %zu in packets\n",
                              path.c_str(), set.name, singleHits, packetHits);

@@ -52,26 +52,32 @@ constexpr uint32_t permuteIndex(uint32_t i, uint32_t length, uint32_t p) {
     return static_cast<uint32_t>((uint64_t(i) + p) % length);
 }
 
-// permuteIndex of every values[k] in place (length <= 2^31), for the batch paths. One element's walk takes a
-// random number of steps, a branch the processor mispredicts about every other element; here each pass steps
-// every element still outside [0, length), until none is, so the loops have no branch per element and vectorise.
-// The final offset is a subtraction: (i + p) mod length = (i + p mod length) mod length, and i + p mod length is
-// below 2 length.
-[[gnu::always_inline]] inline void permuteIndices(uint32_t* values, uint32_t count, uint32_t length, uint32_t p) {
-    const uint32_t w = permutationMask(length);
+// The cycle walk of a run of elements, in place: step(v) until every value lies in [0, length). One element's
+// walk takes a random number of steps, a branch the processor mispredicts about every other element; here each
+// pass steps every element still outside, until none is, so the loops have no branch per element and vectorise.
+template <typename Step>
+[[gnu::always_inline]] inline void walkIntoRange(uint32_t* values, uint32_t count, uint32_t length, const Step& step) {
     uint32_t outside = 0;
     for (uint32_t k = 0; k < count; ++k) {
-        values[k] = permutationStep(values[k], w, p);
+        values[k] = step(values[k]);
         outside |= static_cast<uint32_t>(values[k] >= length);
     }
     while (outside) {
         outside = 0;
         for (uint32_t k = 0; k < count; ++k) {
             const uint32_t v = values[k];
-            values[k] = v >= length ? permutationStep(v, w, p) : v;
+            values[k] = v >= length ? step(v) : v;
             outside |= static_cast<uint32_t>(values[k] >= length);
         }
     }
+}
+
+// permuteIndex of every values[k] in place (length <= 2^31), for the batch paths (walkIntoRange). The final
+// offset is a subtraction: (i + p) mod length = (i + p mod length) mod length, and i + p mod length is below
+// 2 length.
+[[gnu::always_inline]] inline void permuteIndices(uint32_t* values, uint32_t count, uint32_t length, uint32_t p) {
+    const uint32_t w = permutationMask(length);
+    walkIntoRange(values, count, length, [w, p](uint32_t i) { return permutationStep(i, w, p); });
     const uint32_t offset = p % length;
     for (uint32_t k = 0; k < count; ++k) {
         const uint32_t shifted = values[k] + offset;
@@ -109,24 +115,11 @@ constexpr uint32_t permuteIndexFast(uint32_t i, uint32_t length, uint32_t seed) 
     return i;
 }
 
-// permuteIndexFast of every values[k] in place, walked as permuteIndices walks: each pass steps every element still
-// outside [0, length), so the loops have no branch per element and vectorise.
+// permuteIndexFast of every values[k] in place, for the batch paths (walkIntoRange).
 [[gnu::always_inline]] inline void permuteIndicesFast(uint32_t* values, uint32_t count, uint32_t length,
                                                       uint32_t seed) {
     const FastPermutation permutation(length, seed);
-    uint32_t outside = 0;
-    for (uint32_t k = 0; k < count; ++k) {
-        values[k] = permutation.step(values[k]);
-        outside |= static_cast<uint32_t>(values[k] >= length);
-    }
-    while (outside) {
-        outside = 0;
-        for (uint32_t k = 0; k < count; ++k) {
-            const uint32_t v = values[k];
-            values[k] = v >= length ? permutation.step(v) : v;
-            outside |= static_cast<uint32_t>(values[k] >= length);
-        }
-    }
+    walkIntoRange(values, count, length, [&permutation](uint32_t i) { return permutation.step(i); });
 }
 
 } // namespace stipple::detail
